@@ -1,0 +1,377 @@
+package rp1.rossum;
+
+import java.awt.Color;
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.Socket;
+
+/**
+ * The RP1 wire protocol shared by both ends of a session: the client ({@link RsClient}) and the
+ * server's per-client connection ({@link RsConnection}). It owns the streams, the 20-byte transaction
+ * header (version, client id, client key, sequence number, transaction code) and its validation, the
+ * sequence numbering, the logger, and the orderly shutdown of a session.
+ *
+ * <p>Every message is built completely in memory and then written and flushed at once under one
+ * lock, so messages from different threads never interleave and a message that fails to encode
+ * never reaches the stream.
+ */
+public class RsProtocol implements RsLogInterface {
+    protected static final int VERSION = 0;
+    protected static final int MAX_TRANSACTION_CODE = 6;
+    protected static final int TRANSACTION_ARRAY_SIZE = 7;
+    protected static final int NULL_TRANSACTION = 0;
+    protected static final int CONNECT = 1;
+    protected static final int ACCEPT = 2;
+    protected static final int EVENT = 3;
+    protected static final int REQUEST = 4;
+    protected static final int BODY_SPECIFICATION = 5;
+    protected static final int INTERLOCK = 6;
+
+    protected static final int UNDEFINED_BODY_PART = 0;
+    protected static final int WHEEL_SYSTEM = 1;
+    protected static final int BODY_CIRCLE = 2;
+    protected static final int BODY_SHAPE = 3;
+    protected static final int BODY_SENSOR = 4;
+    protected static final int BODY_TARGET_SENSOR = 5;
+    protected static final int BODY_CONTACT_SENSOR = 6;
+    protected static final int BODY_RANGE_SENSOR = 7;
+    protected static final int BODY_PAINT_SENSOR = 8;
+    protected static final int BODY_PAINTER = 9;
+
+    protected static final int UNDEFINED_PLAN_OBJECT = 0;
+    protected static final int PLAN_WALL = 1;
+    protected static final int PLAN_TARGET = 2;
+    protected static final int PLAN_PLACEMENT = 3;
+    protected static final int PLAN_NAV_NODE = 4;
+    protected static final int PLAN_NAV_LINK = 5;
+    protected static final int PLAN_PAINT = 6;
+
+    /** Diagnostic names of the transaction codes, indexed by code. */
+    protected static final String[] transactionName = {
+        "NULL", "CONNECT", "ACCEPT", "EVENT", "REQUEST", "BODY_SPECIFICATION", "INTERLOCK"};
+    /** Diagnostic names of the request codes, indexed by code. */
+    protected static final String[] requestName = {
+        "Timeout", "Subscription", "SensorStatus", "Motion", "Halt", "Position", "SetPosition",
+        "Placement", "TargetSelection", "Plan", "Heartbeat", "PainterChange", "ActuatorControl",
+        "EncoderStatus"};
+    /** Diagnostic names of the event codes, indexed by code. */
+    protected static final String[] eventName = {
+        "ContactSensor", "MouseClick", "Position", "RangeSensor", "TargetSensor", "Timeout",
+        "MotionStarted", "MotionHalted", "Placement", "TargetSelection", "Plan", "PaintSensor",
+        "Heartbeat", "EncoderStatus"};
+
+    protected Socket socket;
+    protected DataInputStream input;
+    protected DataOutputStream output;
+    protected int clientID;
+    protected int clientKey;
+    /** The number of the last message this side sent. */
+    protected int sequence;
+    /** The sequence number of the last message received from the peer (logged, never checked). */
+    protected int serverSequence;
+    protected RsLogInterface logger;
+    protected boolean verbosity;
+
+    private final Object writeLock = new Object();
+    private boolean loggerSet;
+    private boolean closed;
+    private RsProtocolShutdownHandler shutdownHandler;
+    private WireIn wireIn;
+
+    public RsProtocol() {
+    }
+
+    /**
+     * Talks over {@code socket}. Nagle's algorithm is switched off: RP1 messages are small and
+     * answered one by one, and delaying them would cap interlocked exchanges at a few dozen per second.
+     */
+    public void setSocket(Socket socket) throws IOException {
+        this.socket = socket;
+        socket.setTcpNoDelay(true);
+        setInputOutputStreams(socket.getInputStream(), socket.getOutputStream());
+    }
+
+    /** Talks over these streams (buffered here); either may be null. */
+    public void setInputOutputStreams(InputStream in, OutputStream out) {
+        synchronized (writeLock) {
+            input = in == null ? null : new DataInputStream(new BufferedInputStream(in));
+            output = out == null ? null : new DataOutputStream(new BufferedOutputStream(out));
+            wireIn = input == null ? null : new WireIn(input);
+            closed = false;
+        }
+    }
+
+    public boolean isInputSet() {
+        return input != null;
+    }
+
+    public boolean isOutputSet() {
+        return output != null;
+    }
+
+    /** Whether {@link #setLogger} has been called (even with null). */
+    public boolean isLoggerSet() {
+        return loggerSet;
+    }
+
+    /** Called once when this session shuts down. */
+    public void setProtocolShutdownHandler(RsProtocolShutdownHandler handler) {
+        shutdownHandler = handler;
+    }
+
+    /** Logs through {@code logger}; null disables logging. Either way the logger counts as set. */
+    public void setLogger(RsLogInterface logger) {
+        this.logger = logger;
+        loggerSet = true;
+        if (logger != null) {
+            verbosity = logger.getVerbosity();
+        }
+    }
+
+    @Override
+    public void log(String message) {
+        logIt("s", message);
+    }
+
+    @Override
+    public void verbose(String message) {
+        if (verbosity) {
+            logIt("v", message);
+        }
+    }
+
+    @Override
+    public boolean getVerbosity() {
+        return verbosity;
+    }
+
+    @Override
+    public void setVerbosity(boolean value) {
+        verbosity = value;
+        if (logger != null) {
+            logger.setVerbosity(value);
+        }
+    }
+
+    @Override
+    public void logIt(String level, String message) {
+        RsLogInterface l = logger;
+        if (l != null) {
+            l.logIt(level, message);
+        }
+    }
+
+    /**
+     * Reads and validates a transaction header (protocol.md section 3.2): version 0, this session's
+     * client id and key, a transaction code in 1..6.
+     *
+     * @return the transaction code
+     * @throws java.io.EOFException if the stream ended cleanly before the header
+     * @throws RsProtocolException if the header is invalid or the stream ends inside it
+     */
+    protected int readHeader() throws IOException {
+        WireIn in = wire();
+        int version = in.firstI32("header version");
+        if (version != VERSION) {
+            throw new RsProtocolException("header version", "expected " + VERSION + ", got " + version);
+        }
+        int id = in.i32("header client id");
+        if (id != clientID) {
+            throw new RsProtocolException("header client id", "expected " + clientID + ", got " + id);
+        }
+        int key = in.i32("header client key");
+        if (key != clientKey) {
+            throw new RsProtocolException("header client key", "expected " + clientKey + ", got " + key);
+        }
+        serverSequence = in.i32("header sequence");
+        int code = in.i32("header transaction code");
+        if (code < CONNECT || code > MAX_TRANSACTION_CODE) {
+            throw new RsProtocolException("header transaction code", "unknown code " + code);
+        }
+        return code;
+    }
+
+    /** Reads a header and checks that it carries {@code expected}. */
+    protected int readHeader(int expected) throws IOException {
+        int code = readHeader();
+        if (code != expected) {
+            throw new RsProtocolException("header transaction code",
+                    "expected " + transactionName[expected] + " (" + expected + "), got " + describeTransaction(code));
+        }
+        return code;
+    }
+
+    static String describeTransaction(int code) {
+        return code >= 0 && code < transactionName.length ? transactionName[code] + " (" + code + ")" : String.valueOf(code);
+    }
+
+    /** The field-naming reader over the input stream. */
+    WireIn wire() throws IOException {
+        WireIn in = wireIn;
+        if (in == null) {
+            throw new IOException("connection is closed");
+        }
+        return in;
+    }
+
+    /**
+     * Writes a header for {@code transactionCode} with the next sequence number straight to the output
+     * stream, unflushed. Kept for subclasses written against the original API; the library itself
+     * sends whole messages through {@link #send}.
+     */
+    protected void writeHeader(int transactionCode) throws IOException {
+        synchronized (writeLock) {
+            DataOutputStream out = openOutput();
+            out.writeInt(VERSION);
+            out.writeInt(clientID);
+            out.writeInt(clientKey);
+            out.writeInt(++sequence);
+            out.writeInt(transactionCode);
+        }
+    }
+
+    /** Writes a STR (null as the empty string) to the output stream, unflushed. */
+    protected void writeString(String s) throws IOException {
+        synchronized (writeLock) {
+            openOutput().writeUTF(s == null ? "" : s);
+        }
+    }
+
+    /** Reads a STR (never null). */
+    protected String readString() throws IOException {
+        return wire().str("string");
+    }
+
+    /** Writes a COLOR to the output stream, unflushed. */
+    protected void writeColor(Color c) throws IOException {
+        write(new WireOut().color(c));
+    }
+
+    /** Writes a COLOR_ARRAY to the output stream, unflushed. */
+    protected void writeColorArray(Color[] colors) throws IOException {
+        write(new WireOut().colorArray(colors));
+    }
+
+    protected Color readColor() throws IOException {
+        return wire().color("color");
+    }
+
+    protected Color[] readColorArray() throws IOException {
+        return wire().colorArray("color array");
+    }
+
+    private void write(WireOut bytes) throws IOException {
+        synchronized (writeLock) {
+            bytes.writeTo(openOutput());
+        }
+    }
+
+    private DataOutputStream openOutput() throws IOException {
+        DataOutputStream out = output;
+        if (out == null) {
+            throw new IOException("connection is closed");
+        }
+        return out;
+    }
+
+    /**
+     * Sends one complete message: a header for {@code transactionCode} carrying the next sequence
+     * number, then {@code payload}, flushed once.
+     */
+    void send(int transactionCode, WireOut payload) throws IOException {
+        synchronized (writeLock) {
+            DataOutputStream out = openOutput();
+            WireOut header = new WireOut().header(clientID, clientKey, ++sequence, transactionCode);
+            header.writeTo(out);
+            if (payload != null) {
+                payload.writeTo(out);
+            }
+            out.flush();
+        }
+    }
+
+    /**
+     * Sends a header carrying the current sequence number and only then counts it: the original
+     * client's CONNECT goes out this way with sequence 0, so its first message afterwards carries 2.
+     */
+    void sendWithCurrentSequence(int transactionCode) throws IOException {
+        synchronized (writeLock) {
+            DataOutputStream out = openOutput();
+            new WireOut().header(clientID, clientKey, sequence, transactionCode).writeTo(out);
+            sequence++;
+            out.flush();
+        }
+    }
+
+    /** Whether this session has been shut down. */
+    boolean isClosed() {
+        synchronized (writeLock) {
+            return closed;
+        }
+    }
+
+    /**
+     * Ends the session: closes the streams and the socket and calls the shutdown handler, once.
+     * Further calls do nothing.
+     */
+    protected synchronized void shutdown() {
+        RsProtocolShutdownHandler handler;
+        synchronized (writeLock) {
+            if (closed) {
+                return;
+            }
+            closed = true;
+            closeQuietly(input);
+            closeQuietly(output);
+            closeQuietly(socket);
+            input = null;
+            output = null;
+            socket = null;
+            wireIn = null;
+            handler = shutdownHandler;
+        }
+        if (handler != null) {
+            handler.process();
+        }
+    }
+
+    private static void closeQuietly(AutoCloseable c) {
+        if (c == null) {
+            return;
+        }
+        try {
+            c.close();
+        } catch (Exception ignored) {
+            // Closing a stream that already failed tells us nothing new.
+        }
+    }
+
+    /** @deprecated the client id is taken from the handshake. */
+    @Deprecated
+    protected void setClientID(int id) {
+        clientID = id;
+    }
+
+    /** @deprecated the client key is taken from the handshake. */
+    @Deprecated
+    protected void setClientKey(int key) {
+        clientKey = key;
+    }
+
+    /** @deprecated for diagnostics only. */
+    @Deprecated
+    protected int getClientID() {
+        return clientID;
+    }
+
+    /** @deprecated for diagnostics only. */
+    @Deprecated
+    protected int getClientKey() {
+        return clientKey;
+    }
+}

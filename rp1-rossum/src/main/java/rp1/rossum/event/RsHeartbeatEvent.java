@@ -1,0 +1,16 @@
+package rp1.rossum.event;
+
+/**
+ * One beat of a periodic heartbeat requested with {@code sendHeartbeatRequest}.
+ */
+public class RsHeartbeatEvent extends RsEvent {
+    private static final long serialVersionUID = 1L;
+
+    /** 1 for the first beat after the request, then 2, 3, .... */
+    public final int sequence;
+
+    public RsHeartbeatEvent(double simTime, int sequence) {
+        super(EVT_HEARTBEAT, simTime);
+        this.sequence = sequence;
+    }
+}

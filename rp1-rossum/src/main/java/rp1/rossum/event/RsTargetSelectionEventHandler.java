@@ -1,0 +1,10 @@
+package rp1.rossum.event;
+
+/**
+ * Receives target selection events. Register one with the matching {@code RsClient.add...EventHandler}
+ * method; {@link #process} runs on the thread executing {@code RsClient.run()}.
+ */
+public interface RsTargetSelectionEventHandler extends RsEventHandler {
+    /** Handles one event; call {@code event.consume()} to keep later handlers from seeing it. */
+    void process(RsTargetSelectionEvent event);
+}

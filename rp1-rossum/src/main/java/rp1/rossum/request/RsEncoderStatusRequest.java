@@ -1,0 +1,24 @@
+package rp1.rossum.request;
+
+/** Report the state of some wheel encoders, optionally clearing their accumulators afterwards. */
+public class RsEncoderStatusRequest extends RsRequest {
+    private static final long serialVersionUID = 1L;
+
+    /** Echoed in every resulting event, so a client can match answers to requests. */
+    public final int requestIndex;
+    /** Part ids of the wheels whose encoders to report, in reporting order. */
+    public final int[] encoderID;
+    /** Whether to zero the accumulators after reporting. */
+    public final boolean clearOnReport;
+
+    public RsEncoderStatusRequest(int requestIndex, int[] encoderID, boolean clearOnReport) {
+        super(REQ_ENCODER_STATUS);
+        this.requestIndex = requestIndex;
+        this.encoderID = encoderID;
+        this.clearOnReport = clearOnReport;
+    }
+
+    public int[] getEncoderID() {
+        return encoderID;
+    }
+}

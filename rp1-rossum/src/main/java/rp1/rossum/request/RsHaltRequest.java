@@ -1,0 +1,10 @@
+package rp1.rossum.request;
+
+/** Stop the current motion now (answered by a motion-halted event with cause "request"). */
+public class RsHaltRequest extends RsRequest {
+    private static final long serialVersionUID = 1L;
+
+    public RsHaltRequest() {
+        super(REQ_HALT);
+    }
+}

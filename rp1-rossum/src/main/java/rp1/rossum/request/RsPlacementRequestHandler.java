@@ -1,0 +1,6 @@
+package rp1.rossum.request;
+
+/** Server side: handles placement requests read by an {@code RsConnection}. */
+public interface RsPlacementRequestHandler extends RsRequestHandler {
+    void process(RsPlacementRequest request);
+}

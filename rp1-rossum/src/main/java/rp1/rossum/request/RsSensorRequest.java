@@ -1,0 +1,20 @@
+package rp1.rossum.request;
+
+/** Report one sensor's current state now (polling), whatever the subscriptions. */
+public class RsSensorRequest extends RsRequest {
+    private static final long serialVersionUID = 1L;
+
+    /** Part id of the sensor. */
+    public final int sensorID;
+
+    public RsSensorRequest(int sensorID) {
+        super(REQ_SENSOR_STATUS);
+        this.sensorID = sensorID;
+    }
+
+    /** The sensor id. */
+    @Override
+    public int getIndex() {
+        return sensorID;
+    }
+}
