@@ -1,0 +1,73 @@
+package rp1.planparser;
+
+import java.io.IOException;
+
+import rp1.rossum.RsObject;
+
+/**
+ * The body of one object declaration being read: collects its specifications and, at the closing
+ * brace, checks them and yields the finished object. The generic specifications ({@code color},
+ * {@code lineColor}, {@code fillColor}, {@code label}) are handled here; each object type adds its own.
+ */
+abstract class Declaration {
+    /** The object being declared, named already. */
+    protected final RsObject object;
+
+    Declaration(RsObject object) {
+        this.object = object;
+    }
+
+    /**
+     * Whether the body's syntax is checked strictly. Walls, obstacles and paint reject a stray token
+     * where a specification should start; targets, placements, nodes and links skip it, as the
+     * original does, and their messages are worded differently.
+     */
+    abstract boolean strict();
+
+    /** The specifications this type accepts besides the generic ones, for messages. */
+    abstract String specificItems();
+
+    /**
+     * Reads the value of specification {@code item} (its name and colon are consumed).
+     *
+     * @return false if this type has no such specification (nothing is consumed then)
+     */
+    final boolean item(Token item, ValueReader in) throws IOException, RsParsingException {
+        switch (item.text()) {
+            case "color":
+                object.setColor(in.color());
+                return true;
+            case "lineColor":
+                object.setLineColor(in.color());
+                return true;
+            case "fillColor":
+                object.setFillColor(in.color());
+                return true;
+            case "label":
+                object.setLabel(in.string());
+                return true;
+            default:
+                return specificItem(item, in);
+        }
+    }
+
+    /** Reads the value of a specification particular to this type; false if there is none called so. */
+    protected abstract boolean specificItem(Token item, ValueReader in) throws IOException, RsParsingException;
+
+    /**
+     * Checks the collected specifications and completes the object.
+     *
+     * @param close the closing brace, where missing specifications are reported
+     */
+    abstract RsObject finish(Token close, PlanLexer lexer) throws RsParsingException;
+
+    /** The keyword that declares this type. */
+    String keyword() {
+        return object.getClassName();
+    }
+
+    /** All specifications this type accepts, for messages. */
+    final String acceptedItems() {
+        return specificItems() + ", color, lineColor, fillColor, label";
+    }
+}
