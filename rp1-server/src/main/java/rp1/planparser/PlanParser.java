@@ -143,7 +143,8 @@ final class PlanParser {
         values.symbol(':', d.strict() ? "Invalid syntax where ':' expected in object specification"
                 : "Invalid syntax in specification (colon expected)");
         if (!d.item(item, values)) {
-            throw lexer.error(item, "Invalid object specification: " + item.text() + " (a "
+            String article = "aeiou".indexOf(d.keyword().charAt(0)) >= 0 ? "an " : "a ";
+            throw lexer.error(item, "Invalid object specification: " + item.text() + " (" + article
                     + d.keyword() + " declaration accepts " + d.acceptedItems() + ")");
         }
         values.symbol(';', d.strict() ? "Invalid syntax where ';' expected" : "Invalid syntax where semi-colon expected");
