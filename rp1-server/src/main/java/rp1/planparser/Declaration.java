@@ -12,20 +12,25 @@ import rp1.rossum.RsObject;
 abstract class Declaration {
     /** The object being declared, named already. */
     protected final RsObject object;
-
-    Declaration(RsObject object) {
-        this.object = object;
-    }
+    private final boolean strict;
+    private final String specificItems;
 
     /**
-     * Whether the body's syntax is checked strictly. Walls, obstacles and paint reject a stray token
-     * where a specification should start; targets, placements, nodes and links skip it, as the
-     * original does, and their messages are worded differently.
+     * @param strict whether the body's syntax is checked strictly: walls, obstacles and paint reject a
+     *     stray token where a specification should start; targets, placements, nodes and links skip
+     *     it, as the original does, and their messages are worded differently
+     * @param specificItems the specifications this type accepts besides the generic ones, for messages
      */
-    abstract boolean strict();
+    Declaration(RsObject object, boolean strict, String specificItems) {
+        this.object = object;
+        this.strict = strict;
+        this.specificItems = specificItems;
+    }
 
-    /** The specifications this type accepts besides the generic ones, for messages. */
-    abstract String specificItems();
+    /** Whether the body's syntax is checked strictly (see the constructor). */
+    final boolean strict() {
+        return strict;
+    }
 
     /**
      * Reads the value of specification {@code item} (its name and colon are consumed).
@@ -68,6 +73,6 @@ abstract class Declaration {
 
     /** All specifications this type accepts, for messages. */
     final String acceptedItems() {
-        return specificItems() + ", color, lineColor, fillColor, label";
+        return specificItems + ", color, lineColor, fillColor, label";
     }
 }

@@ -17,18 +17,8 @@ final class LinkDeclaration extends Declaration {
     private RsNavNode n1;
 
     LinkDeclaration(String name, RsPlan plan) {
-        super(new RsNavLink(name, plan));
+        super(new RsNavLink(name, plan), false, "nodes");
         this.plan = plan;
-    }
-
-    @Override
-    boolean strict() {
-        return false;
-    }
-
-    @Override
-    String specificItems() {
-        return "nodes";
     }
 
     @Override

@@ -147,7 +147,8 @@ final class PlanParser {
             throw lexer.error(item, "Invalid object specification: " + item.text() + " (" + article
                     + d.keyword() + " declaration accepts " + d.acceptedItems() + ")");
         }
-        values.symbol(';', d.strict() ? "Invalid syntax where ';' expected" : "Invalid syntax where semi-colon expected");
+        values.symbol(';', d.strict() ? "Invalid syntax where ';' expected"
+                : "Invalid syntax where semi-colon expected");
     }
 
     /**

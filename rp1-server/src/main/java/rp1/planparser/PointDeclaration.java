@@ -39,7 +39,7 @@ final class PointDeclaration extends Declaration {
     private double[] geometry;
 
     private PointDeclaration(RsObject object, Kind kind) {
-        super(object);
+        super(object, false, kind.hasLineWidth ? "geometry, lineWidth" : "geometry");
         this.kind = kind;
     }
 
@@ -53,16 +53,6 @@ final class PointDeclaration extends Declaration {
 
     static PointDeclaration node(String name, RsPlan plan) {
         return new PointDeclaration(new RsNavNode(name, plan), Kind.NODE);
-    }
-
-    @Override
-    boolean strict() {
-        return false;
-    }
-
-    @Override
-    String specificItems() {
-        return kind.hasLineWidth ? "geometry, lineWidth" : "geometry";
     }
 
     @Override

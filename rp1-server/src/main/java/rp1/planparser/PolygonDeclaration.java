@@ -29,7 +29,7 @@ final class PolygonDeclaration extends Declaration {
     private double orientationDegrees;
 
     private PolygonDeclaration(RsObject object, boolean paint) {
-        super(object);
+        super(object, true, "geometry, polygon, offset, orientation" + (paint ? ", region" : ""));
         this.paint = paint;
     }
 
@@ -44,18 +44,8 @@ final class PolygonDeclaration extends Declaration {
     }
 
     @Override
-    boolean strict() {
-        return true;
-    }
-
-    @Override
     String keyword() {
         return paint ? "paint" : "obstacle";
-    }
-
-    @Override
-    String specificItems() {
-        return "geometry, polygon, offset, orientation" + (paint ? ", region" : "");
     }
 
     @Override

@@ -58,7 +58,8 @@ public final class RsPlanParser {
      * @throws IOException if the file cannot be read
      */
     public static RsPlan parseFile(Path file) throws IOException, RsParsingException {
-        try (Reader in = new BufferedReader(new InputStreamReader(Files.newInputStream(file), StandardCharsets.UTF_8))) {
+        try (Reader in = new BufferedReader(
+                new InputStreamReader(Files.newInputStream(file), StandardCharsets.UTF_8))) {
             return parse(in, file.toString());
         }
     }

@@ -17,17 +17,7 @@ final class WallDeclaration extends Declaration {
     private double[] geometry;
 
     WallDeclaration(String name, RsPlan plan) {
-        super(new RsWall(name, plan));
-    }
-
-    @Override
-    boolean strict() {
-        return true;
-    }
-
-    @Override
-    String specificItems() {
-        return "geometry, constraint";
+        super(new RsWall(name, plan), true, "geometry, constraint");
     }
 
     @Override
