@@ -104,8 +104,6 @@ public class RsBodyPaintSensor extends RsBodySensor {
     /** The reading as a paint-sensor event: detector position, status and region. */
     @Override
     public RsSensorEvent getSensorEvent(double simTime) {
-        double x = mappedPos == null ? 0.0 : mappedPos.x;
-        double y = mappedPos == null ? 0.0 : mappedPos.y;
-        return new RsPaintSensorEvent(simTime, getID(), x, y, hot, region);
+        return new RsPaintSensorEvent(simTime, getID(), xOf(mappedPos), yOf(mappedPos), hot, region);
     }
 }

@@ -123,8 +123,6 @@ public class RsBodyRangeSensor extends RsBodySensor {
     /** The reading as a range-sensor event (ux = uy = 0, as RP1 0.60 sends them; name "" when cold). */
     @Override
     public RsSensorEvent getSensorEvent(double simTime) {
-        double x = mappedPos == null ? 0.0 : mappedPos.x;
-        double y = mappedPos == null ? 0.0 : mappedPos.y;
-        return new RsRangeSensorEvent(simTime, getID(), x, y, vx, vy, hot, range, nameOrEmpty(objectName));
+        return new RsRangeSensorEvent(simTime, getID(), xOf(mappedPos), yOf(mappedPos), vx, vy, hot, range, nameOrEmpty(objectName));
     }
 }

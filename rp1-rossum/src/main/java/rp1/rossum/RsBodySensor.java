@@ -69,6 +69,16 @@ public abstract class RsBodySensor extends RsBodyShape {
         }
     }
 
+    /** The x coordinate of a detector position, 0 before the first evaluation. */
+    static double xOf(RsPoint detector) {
+        return detector == null ? 0.0 : detector.x;
+    }
+
+    /** The y coordinate of a detector position, 0 before the first evaluation. */
+    static double yOf(RsPoint detector) {
+        return detector == null ? 0.0 : detector.y;
+    }
+
     /** An empty string for null, as the wire delivers names. */
     static String nameOrEmpty(String name) {
         return name == null ? "" : name;

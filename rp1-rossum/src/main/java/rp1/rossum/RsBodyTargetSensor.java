@@ -234,9 +234,7 @@ public class RsBodyTargetSensor extends RsBodySensor {
      */
     @Override
     public RsSensorEvent getSensorEvent(double simTime) {
-        double x = mappedPos == null ? 0.0 : mappedPos.x;
-        double y = mappedPos == null ? 0.0 : mappedPos.y;
-        return new RsTargetSensorEvent(simTime, getID(), x, y, vx, vy, hot,
+        return new RsTargetSensorEvent(simTime, getID(), xOf(mappedPos), yOf(mappedPos), vx, vy, hot,
                 xTarget, yTarget, range, bearing, nameOrEmpty(targetName));
     }
 }

@@ -45,11 +45,7 @@ public class RsMotionCircle extends RsMotion {
     /** The start pose rotated about the pivot by rate times elapsed time (position and heading). */
     @Override
     protected RsTransform getStateAtTime(double t) {
-        double a = turnRate * (clamp(t) - time0);
-        double c = Math.cos(a);
-        double s = Math.sin(a);
-        RsTransform rotation = new RsTransform(a, cx - (c * cx - s * cy), cy - (s * cx + c * cy));
-        return new RsTransform(rotation, transform0);
+        return new RsTransform(RsTransform.rotationAbout(turnRate * (clamp(t) - time0), cx, cy), transform0);
     }
 
     @Override

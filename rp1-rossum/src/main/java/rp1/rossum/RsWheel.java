@@ -167,10 +167,7 @@ public class RsWheel extends RsBodyShape implements RsEncoder {
 
     /** {@code t} followed by a rotation of {@code angle} radians about the point (x, y). */
     protected RsTransform rotateAboutPivot(RsTransform t, double x, double y, double angle) {
-        double c = Math.cos(angle);
-        double s = Math.sin(angle);
-        RsTransform rotation = new RsTransform(angle, x - (c * x - s * y), y - (s * x + c * y));
-        return new RsTransform(t, rotation);
+        return new RsTransform(t, RsTransform.rotationAbout(angle, x, y));
     }
 
     /** Sets the steering (or caster) angle used for drawing, radians relative to the body. */

@@ -200,14 +200,20 @@ class CollisionTest {
         assertTrue(rear.getCollision());
     }
 
-    @Test
-    void aPressedBumperIsReleasedWhenTheNextMotionStarts() {
-        RsBodyContactSensor bumper = frontBumper();
+    /** A bumper robot that drove from the origin into the wall of {@code plan} and stopped there. */
+    private static RsBody drivenIntoWall(RsBodyContactSensor bumper, RsPlan plan) {
         RsBody b = bumperRobot(bumper);
-        RsPlan plan = wallBetween(1.0, 1.1);
         b.place(0.0, 0.0, 0.0, 0.0);
         b.computeMotion(0.0, new RsMotionRequest(1.0, 0.0, 2.0), plan);
         b.pressContactSensors(b.motion.time1);
+        return b;
+    }
+
+    @Test
+    void aPressedBumperIsReleasedWhenTheNextMotionStarts() {
+        RsBodyContactSensor bumper = frontBumper();
+        RsPlan plan = wallBetween(1.0, 1.1);
+        RsBody b = drivenIntoWall(bumper, plan);
         assertTrue(bumper.getHot());
         b.computeMotion(1.0, new RsMotionRequest(-1.0, 0.0, 0.5), plan);
         var released = b.releaseContactSensors(1.0);
@@ -220,11 +226,8 @@ class CollisionTest {
     @Test
     void aBumperPushedOnIntoTheWallStaysPressed() {
         RsBodyContactSensor bumper = frontBumper();
-        RsBody b = bumperRobot(bumper);
         RsPlan plan = wallBetween(1.0, 1.1);
-        b.place(0.0, 0.0, 0.0, 0.0);
-        b.computeMotion(0.0, new RsMotionRequest(1.0, 0.0, 2.0), plan);
-        b.pressContactSensors(b.motion.time1);
+        RsBody b = drivenIntoWall(bumper, plan);
         b.computeMotion(1.0, new RsMotionRequest(1.0, 0.0, 1.0), plan);
         assertInstanceOf(RsMotionNull.class, b.motion);
         assertEquals(0, b.releaseContactSensors(1.0).length);
