@@ -258,7 +258,8 @@ public final class BodyCodec {
 
     private static RsBodyPart readPaintSensor(WireIn in, String f) throws IOException {
         double[] p = readOutline(in, f + ".outline");
-        RsBodyPaintSensor s = new RsBodyPaintSensor(p, p.length / 2, in.f64(f + ".xDetector"), in.f64(f + ".yDetector"));
+        RsBodyPaintSensor s = new RsBodyPaintSensor(p, p.length / 2,
+                in.f64(f + ".xDetector"), in.f64(f + ".yDetector"));
         int n = in.count(f + ".nRegions", WireLimits.MAX_REGIONS);
         int[] regions = new int[n];
         for (int i = 0; i < n; i++) {

@@ -54,6 +54,7 @@ public class RsAckermanSteering extends RsWheelSystem {
         return dualSteering ? wheelBase / 2.0 : wheelBase;
     }
 
+    /** The tightest turn radius, metres: b / tan(innerMax) + trackWidth/2. */
     public double getMinTurnRadius() {
         return minTurnRadius;
     }
@@ -164,15 +165,18 @@ public class RsAckermanSteering extends RsWheelSystem {
      * A request to drive at {@code velocity} m/s with the central steering angle (limited) for
      * {@code duration} s: omega = velocity / turn radius, or 0 when |angle| is at most 1e-5.
      */
-    public RsMotionRequest getMotionRequestUsingVelocityAndSteeringAngle(double velocity, double steeringAngle, double duration) {
-        double w = Math.abs(steeringAngle) <= STRAIGHT_ANGLE ? 0.0 : velocity / getTurnRadiusForSteeringAngle(steeringAngle);
+    public RsMotionRequest getMotionRequestUsingVelocityAndSteeringAngle(
+            double velocity, double steeringAngle, double duration) {
+        double w = Math.abs(steeringAngle) <= STRAIGHT_ANGLE
+                ? 0.0 : velocity / getTurnRadiusForSteeringAngle(steeringAngle);
         return new RsMotionRequest(velocity, w, duration);
     }
 
     /** As {@link #getMotionRequestUsingVelocityAndSteeringAngle}, the velocity given as drive-wheel rad/s. */
     public RsMotionRequest getMotionRequestUsingWheelRotationalVelocityAndSteeringAngle(
             double wheelRotationalVelocity, double steeringAngle, double duration) {
-        return getMotionRequestUsingVelocityAndSteeringAngle(wheelRotationalVelocity * driveWheelRadius, steeringAngle, duration);
+        return getMotionRequestUsingVelocityAndSteeringAngle(
+                wheelRotationalVelocity * driveWheelRadius, steeringAngle, duration);
     }
 
     /**

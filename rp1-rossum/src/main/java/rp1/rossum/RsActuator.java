@@ -13,6 +13,7 @@ public class RsActuator extends RsBodyPart {
     protected RsBodyPart[] partsArray = new RsBodyPart[0];
     protected ArrayList<RsBodyPart> partsList = new ArrayList<>();
 
+    /** An actuator without sub-parts, named "Actuator". */
     public RsActuator() {
         name = "Actuator";
     }

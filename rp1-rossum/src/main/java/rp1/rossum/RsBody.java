@@ -104,6 +104,7 @@ public class RsBody extends RsComponent {
         return list;
     }
 
+    /** The body name (null on the client if so constructed; "" after transmission). */
     public String getName() {
         return name;
     }
@@ -184,10 +185,12 @@ public class RsBody extends RsComponent {
         collision = false;
     }
 
+    /** Sets whether the current motion ends in a collision. */
     public void setCollision(boolean collision) {
         this.collision = collision;
     }
 
+    /** Whether the current motion ends in a collision. */
     public boolean getCollision() {
         return collision;
     }
@@ -202,7 +205,8 @@ public class RsBody extends RsComponent {
             return new RsPositionEvent(simTime, 0.0, 0.0, 0.0, 0.0, 0.0);
         }
         RsTransform pose = motion.getStateAtTime(simTime);
-        return new RsPositionEvent(simTime, pose.m13, pose.m23, pose.getTheta(), motion.getVelocity(), motion.getTurnRate());
+        return new RsPositionEvent(simTime, pose.m13, pose.m23, pose.getTheta(),
+                motion.getVelocity(), motion.getTurnRate());
     }
 
     /**
@@ -242,10 +246,12 @@ public class RsBody extends RsComponent {
         searchForCollisions(plan);
     }
 
+    /** Replaces the current motion as is (no collision search). */
     public void setMotion(RsMotion motion) {
         this.motion = motion;
     }
 
+    /** The current motion, or null before the first placement. */
     public RsMotion getMotion() {
         return motion;
     }
@@ -268,10 +274,12 @@ public class RsBody extends RsComponent {
         }
     }
 
+    /** Marks the robot placed (part of the simulation) or not. */
     public void setPlacement(boolean placement) {
         this.placement = placement;
     }
 
+    /** Whether the robot is placed. */
     public boolean getPlacement() {
         return placement;
     }
@@ -403,9 +411,8 @@ public class RsBody extends RsComponent {
             r.union(p.refBounds);
         }
         refBounds = r;
-        refEnclosure = r.isPopulated()
-                ? BodyOutline.edgesFromPoints(BodyOutline.rectanglePoints(r.x + r.width / 2, r.y + r.height / 2, r.width, r.height), 4)
-                : new RsSegment[0];
+        double[] corners = BodyOutline.rectanglePoints(r.x + r.width / 2, r.y + r.height / 2, r.width, r.height);
+        refEnclosure = r.isPopulated() ? BodyOutline.edgesFromPoints(corners, 4) : new RsSegment[0];
     }
 
     /** A process-wide serial number of the body (bodies are not identified on the wire). */

@@ -25,14 +25,17 @@ public class RsBodyCircle extends RsBodyShape {
         name = "Unnamed Circle";
     }
 
+    /** Centre, body coordinates. */
     public double getXCenter() {
         return refXCenter;
     }
 
+    /** Centre, body coordinates. */
     public double getYCenter() {
         return refYCenter;
     }
 
+    /** Radius in metres. */
     public double getRadius() {
         return refRadius;
     }

@@ -42,14 +42,17 @@ public class RsBodyContactSensor extends RsBodySensor {
         this.collisionObjectName = objectName;
     }
 
+    /** Records the contact time found by the collision search (seconds after the motion start). */
     public void setCollisionTime(double time) {
         collisionTime = time;
     }
 
+    /** Whether the collision search of the current motion flagged this sensor. */
     public boolean getCollision() {
         return collision;
     }
 
+    /** The contact time recorded by the collision search, seconds after the motion start. */
     public double getCollisionTime() {
         return collisionTime;
     }

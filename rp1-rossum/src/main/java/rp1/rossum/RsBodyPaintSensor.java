@@ -35,10 +35,12 @@ public class RsBodyPaintSensor extends RsBodySensor {
         name = "Unnamed Paint Sensor";
     }
 
+    /** Detector point, body coordinates. */
     public double getXDetector() {
         return xDetector;
     }
 
+    /** Detector point, body coordinates. */
     public double getYDetector() {
         return yDetector;
     }

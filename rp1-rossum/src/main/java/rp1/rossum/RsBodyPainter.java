@@ -46,6 +46,7 @@ public class RsBodyPainter extends RsBodyShape {
         trailerWidth = 0.0;
     }
 
+    /** Whether the painter is active (set locally when activation or deactivation is requested). */
     public boolean getPainterActivationStatus() {
         return active;
     }
@@ -120,14 +121,17 @@ public class RsBodyPainter extends RsBodyShape {
         return trailerDefined;
     }
 
+    /** Trailer point, body coordinates. */
     public double getTrailerX() {
         return trailerX;
     }
 
+    /** Trailer point, body coordinates. */
     public double getTrailerY() {
         return trailerY;
     }
 
+    /** Trail width in metres (never negative). */
     public double getTrailerWidth() {
         return trailerWidth;
     }
@@ -137,6 +141,7 @@ public class RsBodyPainter extends RsBodyShape {
         return RsColor.copyColorList(paintColors);
     }
 
+    /** Minimum distance between recorded trail points, metres. */
     public double getTrailerMinimumSegmentLength() {
         return minimumSegmentLength;
     }

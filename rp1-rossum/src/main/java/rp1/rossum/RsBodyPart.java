@@ -80,10 +80,12 @@ public abstract class RsBodyPart extends RsComponent {
         DECODING_IDS.remove();
     }
 
+    /** The fill colour used while cold; null = not filled. */
     public void setFillColor(Color color) {
         fillColor = color;
     }
 
+    /** The outline colour used while cold; null = no outline. */
     public void setLineColor(Color color) {
         lineColor = color;
     }
@@ -118,10 +120,12 @@ public abstract class RsBodyPart extends RsComponent {
         return lineColor;
     }
 
+    /** The fill colour used while hot. */
     public Color getHotFillColor() {
         return hotFillColor;
     }
 
+    /** The line colour used while hot. */
     public Color getHotLineColor() {
         return hotLineColor;
     }
@@ -167,6 +171,7 @@ public abstract class RsBodyPart extends RsComponent {
         this.name = name;
     }
 
+    /** The name (may be null on the client; never null after transmission). */
     public String getName() {
         return name;
     }
@@ -204,10 +209,12 @@ public abstract class RsBodyPart extends RsComponent {
     public void resetStateData() {
     }
 
+    /** Marks the part hot (detecting, or painting) or cold. */
     public void setHot(boolean hot) {
         this.hot = hot;
     }
 
+    /** Whether the part is hot. */
     public boolean getHot() {
         return hot;
     }

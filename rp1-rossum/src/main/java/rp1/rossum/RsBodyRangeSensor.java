@@ -55,22 +55,27 @@ public class RsBodyRangeSensor extends RsBodySensor {
         name = "Unnamed Range Sensor";
     }
 
+    /** Detector point, body coordinates. */
     public double getXDetector() {
         return xDetector;
     }
 
+    /** Detector point, body coordinates. */
     public double getYDetector() {
         return yDetector;
     }
 
+    /** Direction of the ray relative to the heading, radians. */
     public double getSightAngle() {
         return sightAngle;
     }
 
+    /** Length of the ray in metres, after clamping to 1e6. */
     public double getMaxRange() {
         return maxRange;
     }
 
+    /** Number of range bins, at least 1. */
     public int getNRangeBin() {
         return nRangeBin;
     }
@@ -123,6 +128,7 @@ public class RsBodyRangeSensor extends RsBodySensor {
     /** The reading as a range-sensor event (ux = uy = 0, as RP1 0.60 sends them; name "" when cold). */
     @Override
     public RsSensorEvent getSensorEvent(double simTime) {
-        return new RsRangeSensorEvent(simTime, getID(), xOf(mappedPos), yOf(mappedPos), vx, vy, hot, range, nameOrEmpty(objectName));
+        return new RsRangeSensorEvent(simTime, getID(), xOf(mappedPos), yOf(mappedPos), vx, vy, hot, range,
+                nameOrEmpty(objectName));
     }
 }

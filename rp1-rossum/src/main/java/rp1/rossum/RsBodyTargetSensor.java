@@ -70,30 +70,37 @@ public class RsBodyTargetSensor extends RsBodySensor {
         name = "Unnamed Target Sensor";
     }
 
+    /** Detector point, body coordinates. */
     public double getXDetector() {
         return xDetector;
     }
 
+    /** Detector point, body coordinates. */
     public double getYDetector() {
         return yDetector;
     }
 
+    /** Sight angle relative to the heading, radians (applied twice, see the class comment). */
     public double getSightAngle() {
         return sightAngle;
     }
 
+    /** Full angular field of view, radians (0 = omni-directional). */
     public double getWidth() {
         return width;
     }
 
+    /** Farthest detectable target, metres. */
     public double getMaxRange() {
         return maxRange;
     }
 
+    /** Number of bearing bins across the field of view. */
     public int getNWidthBin() {
         return nWidthBin;
     }
 
+    /** Number of range bins up to the maximum range. */
     public int getNRangeBin() {
         return nRangeBin;
     }

@@ -56,7 +56,8 @@ public class RsDifferentialSteering extends RsWheelSystem {
     }
 
     /** A request from the wheels' rotational velocities (rad/s), times the drive-wheel radius. */
-    public RsMotionRequest getMotionRequestUsingWheelRotationalVelocities(double rotLeft, double rotRight, double duration) {
+    public RsMotionRequest getMotionRequestUsingWheelRotationalVelocities(
+            double rotLeft, double rotRight, double duration) {
         return getMotionRequestUsingWheelVelocities(rotLeft * driveWheelRadius, rotRight * driveWheelRadius, duration);
     }
 

@@ -163,6 +163,7 @@ public abstract class RsMotion extends RsComponent {
         return 0.0;
     }
 
+    /** The current time of the motion (simulation seconds). */
     public double getTime() {
         return time;
     }
@@ -192,6 +193,7 @@ public abstract class RsMotion extends RsComponent {
         return ++lastContinuityID;
     }
 
+    /** This motion's own continuity id. */
     public int getContinuityID() {
         return continuityID;
     }

@@ -27,6 +27,7 @@ public class RsMotionDepiction {
         this.moving = moving;
     }
 
+    /** Simulation time of the depiction, seconds. */
     public double getTime() {
         return time;
     }
@@ -46,6 +47,7 @@ public class RsMotionDepiction {
         return heading;
     }
 
+    /** Whether the motion was still under way at that time. */
     public boolean isMoving() {
         return moving;
     }

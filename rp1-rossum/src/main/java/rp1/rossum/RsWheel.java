@@ -71,10 +71,12 @@ public class RsWheel extends RsBodyShape implements RsEncoder {
         return maxAbsSteeringAngle > 0.0;
     }
 
+    /** Wheel radius in metres (0 for a caster). */
     public double getWheelRadius() {
         return wheelRadius;
     }
 
+    /** Steering limit either way, radians (0 = fixed wheel). */
     public double getMaxAbsSteeringAngle() {
         return maxAbsSteeringAngle;
     }

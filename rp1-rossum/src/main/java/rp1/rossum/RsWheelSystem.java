@@ -27,6 +27,7 @@ public abstract class RsWheelSystem extends RsActuator {
     /** Centre of the axle, body coordinates (the body origin). */
     protected RsPoint center = new RsPoint();
 
+    /** A wheel system without wheels, named "Wheel System". */
     public RsWheelSystem() {
         name = "Wheel System";
     }
@@ -58,8 +59,9 @@ public abstract class RsWheelSystem extends RsActuator {
     /** Builds, names and adds a fixed left/right pair at x; returns {left, right}. */
     final RsWheel[] addAxleWheels(double x, double wheelRadius, double wheelWidth, String leftName, String rightName) {
         double y = trackWidth / 2.0;
-        RsWheel left = new RsWheel(BodyOutline.rectanglePoints(x, y, 2 * wheelRadius, wheelWidth), 4, x, y, wheelRadius);
-        RsWheel right = new RsWheel(BodyOutline.rectanglePoints(x, -y, 2 * wheelRadius, wheelWidth), 4, x, -y, wheelRadius);
+        double length = 2 * wheelRadius;
+        RsWheel left = new RsWheel(BodyOutline.rectanglePoints(x, y, length, wheelWidth), 4, x, y, wheelRadius);
+        RsWheel right = new RsWheel(BodyOutline.rectanglePoints(x, -y, length, wheelWidth), 4, x, -y, wheelRadius);
         left.setName(leftName);
         right.setName(rightName);
         addWheel(left);
@@ -67,14 +69,17 @@ public abstract class RsWheelSystem extends RsActuator {
         return new RsWheel[] {left, right};
     }
 
+    /** Distance between the left and right wheels, metres. */
     public double getTrackWidth() {
         return trackWidth;
     }
 
+    /** Distance between the front and rear axles, metres (0 for differential steering). */
     public double getWheelBase() {
         return wheelBase;
     }
 
+    /** Radius of the driven wheels, metres. */
     public double getDriveWheelRadius() {
         return driveWheelRadius;
     }
@@ -178,7 +183,8 @@ public abstract class RsWheelSystem extends RsActuator {
      * rectangle centred on the pivot.
      */
     public void addDefaultCasterWheel(double x, double y, double wheelRadius, double wheelWidth) {
-        RsWheelCaster caster = new RsWheelCaster(BodyOutline.rectanglePoints(x, y, 2 * wheelRadius, wheelWidth), 4, x, y);
+        double[] outline = BodyOutline.rectanglePoints(x, y, 2 * wheelRadius, wheelWidth);
+        RsWheelCaster caster = new RsWheelCaster(outline, 4, x, y);
         caster.setName("caster wheel");
         addWheel(caster);
     }

@@ -44,7 +44,8 @@ final class SweptContact {
      * body can turn about (cx, cy) before it touches a wall, or positive infinity. Only one revolution
      * is examined.
      */
-    static double arc(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double cx, double cy, double totalAngle) {
+    static double arc(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls,
+                      double cx, double cy, double totalAngle) {
         if (totalAngle == 0.0) {
             return Double.POSITIVE_INFINITY;
         }
@@ -78,7 +79,8 @@ final class SweptContact {
      * The angle in [0, 2 pi) that the point (px, py) (relative to the pivot) turns in {@code direction}
      * before its circle of squared radius r2 meets edge {@code e}, or positive infinity if it never does.
      */
-    private static double angleToEdge(double px, double py, double r2, RsSegment e, double cx, double cy, double direction) {
+    private static double angleToEdge(double px, double py, double r2, RsSegment e,
+                                      double cx, double cy, double direction) {
         double ex = e.x - cx;
         double ey = e.y - cy;
         double a = e.v.x * e.v.x + e.v.y * e.v.y;

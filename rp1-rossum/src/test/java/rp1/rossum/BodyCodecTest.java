@@ -296,7 +296,8 @@ class BodyCodecTest {
     void aColourComponentOutOfRangeIsRefusedNamingIt() {
         String badFill = "00000009 00000002 0000000000000000 0000000000000000 3fc3333333333333 0000"
                 + "00000001 0000012c 00000000 00000000";
-        RsProtocolException e = assertThrows(RsProtocolException.class, () -> BodyCodec.decode(hex("0000 00000001" + badFill)));
+        RsProtocolException e = assertThrows(RsProtocolException.class,
+                () -> BodyCodec.decode(hex("0000 00000001" + badFill)));
         assertEquals("part[0].fillColor red", e.getField());
     }
 

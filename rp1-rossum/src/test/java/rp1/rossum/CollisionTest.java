@@ -242,6 +242,6 @@ class CollisionTest {
         assertEquals(false, bumper.computeAndSetState(1.0, wallBetween(0, 1), TestPlans.pose(0, 0, 0)));
         assertEquals(false, bumper.didStateChange());
         assertEquals(true, bumper.getHot());
-        assertEquals("", ((rp1.rossum.event.RsContactSensorEvent) bumper.getSensorEvent(1.0)).getNameOfObjectDetected());
+        assertEquals("", bumper.getSensorEvent(1.0).getNameOfObjectDetected());
     }
 }
