@@ -73,6 +73,18 @@ class CollisionTest {
     }
 
     @Test
+    void aTurningEdgeStrikesAPostThatNoVertexReaches() {
+        RsBody b = new RsBody("stick");
+        b.addPart(new RsBodyShape(TestPlans.rect(-1, -0.01, 1, 0.01), 4));
+        RsPlan plan = new RsPlan();
+        TestPlans.box(plan, "post", 0.5, 0.5, 0.52, 0.52);
+        b.place(0.0, 0, 0, 0);
+        b.computeMotion(0.0, new RsMotionRequest(0.0, 1.0, 2.0), plan);
+        double expected = Math.atan2(0.5, 0.52) - Math.asin(0.01 / Math.hypot(0.52, 0.5));
+        assertEquals(expected, b.motion.collisionTime, 1e-9);
+    }
+
+    @Test
     void turningTheOtherWayHitsAfterTheSameSweep() {
         RsBody b = new RsBody("arm");
         b.addPart(new RsBodyShape(TestPlans.rect(0, -0.01, 1, 0.01), 4));
