@@ -96,10 +96,19 @@ public class RsPolygon implements Serializable {
      * @return {@link #INSIDE}, {@link #ON_BOUNDARY} or {@link #OUTSIDE}
      */
     public int checkContainment(double x, double y, double tolerance) {
+        return containment(segment, nSegment, x, y, tolerance);
+    }
+
+    /**
+     * Where (x, y) lies relative to the closed outline made of the first {@code n} edges: within
+     * {@code tolerance} of an edge is {@link #ON_BOUNDARY}; otherwise an even-odd crossing count
+     * decides. Also answers for degenerate outlines (body parts need not have an area).
+     */
+    static int containment(RsSegment[] edges, int n, double x, double y, double tolerance) {
         boolean inside = false;
         double tol2 = tolerance * tolerance;
-        for (int i = 0; i < nSegment; i++) {
-            RsSegment s = segment[i];
+        for (int i = 0; i < n; i++) {
+            RsSegment s = edges[i];
             if (distanceSquaredToSegment(s, x, y) <= tol2) {
                 return ON_BOUNDARY;
             }

@@ -42,6 +42,13 @@ public class RsTransform implements Serializable {
         setOffset(x, y);
     }
 
+    /** The rotation by {@code angle} radians (counter-clockwise) about the point (px, py). */
+    public static RsTransform rotationAbout(double angle, double px, double py) {
+        double c = Math.cos(angle);
+        double s = Math.sin(angle);
+        return new RsTransform(angle, px - (c * px - s * py), py - (s * px + c * py));
+    }
+
     /** The composition {@code a} after {@code b}: maps p to a(b(p)). */
     public RsTransform(RsTransform a, RsTransform b) {
         concat(a, b);

@@ -1,0 +1,441 @@
+package rp1.rossum;
+
+import java.awt.Graphics;
+import java.util.ArrayList;
+import java.util.List;
+import rp1.rossum.event.RsContactSensorEvent;
+import rp1.rossum.event.RsPositionEvent;
+import rp1.rossum.request.RsMotionRequest;
+
+/**
+ * A robot body: its parts in the order they were added (which is also the drawing order), its wheel
+ * system, and, in the simulator, its current motion and whether it is placed. The body plan is in
+ * body coordinates (x forward, y left, origin at the robot's reference point, e.g. the axle centre).
+ *
+ * <p>On the simulator side the body carries the model's per-robot work: interpreting motion requests
+ * (behavior.md section 5.2), the collision search that truncates a motion (section 6), the placement
+ * clear test (section 7), sensor evaluation (section 8) and position reports (section 5.7).
+ */
+public class RsBody extends RsComponent {
+    private static final long serialVersionUID = 1L;
+
+    private static int lastBodyID;
+
+    public String name;
+    /** The wheel system added with {@link #addPart}, or null. */
+    public RsWheelSystem wheelSystem;
+    /** The current motion (simulator side), or null before the first placement. */
+    public RsMotion motion;
+    /** Bounding box of all parts, body coordinates. */
+    public RsRectangle refBounds = new RsRectangle();
+    /** The edges of {@link #refBounds}, body coordinates. */
+    public RsSegment[] refEnclosure = new RsSegment[0];
+    /** Whether the robot is placed in the simulation. */
+    public boolean placement;
+    /** Whether the current motion was cut short by a predicted collision. */
+    public boolean collision;
+
+    private final ArrayList<RsBodyPart> parts = new ArrayList<>();
+    private final int bodyID;
+
+    /** An empty body; null is kept as the name and transmitted as "". */
+    public RsBody(String name) {
+        this.name = name;
+        bodyID = nextBodyID();
+    }
+
+    private static synchronized int nextBodyID() {
+        return ++lastBodyID;
+    }
+
+    /**
+     * Adds a part (drawn after the parts added before it). Adding a wheel system makes it the body's
+     * {@link #wheelSystem}.
+     *
+     * @throws IllegalArgumentException if part is null
+     */
+    public void addPart(RsBodyPart part) {
+        if (part == null) {
+            throw new IllegalArgumentException("part is null");
+        }
+        parts.add(part);
+        if (part instanceof RsWheelSystem) {
+            wheelSystem = (RsWheelSystem) part;
+        }
+        updateRefBounds();
+    }
+
+    /** The parts in the order they were added. */
+    public RsBodyPart[] getBodyPartArray() {
+        return parts.toArray(new RsBodyPart[0]);
+    }
+
+    /** The painters, in part order. */
+    public RsBodyPainter[] getBodyPainterArray() {
+        return partsOf(RsBodyPainter.class).toArray(new RsBodyPainter[0]);
+    }
+
+    /** The sensors, in part order. */
+    public RsBodySensor[] getBodySensorArray() {
+        return partsOf(RsBodySensor.class).toArray(new RsBodySensor[0]);
+    }
+
+    /**
+     * The parts that collide with walls and decide whether a placement is clear: shapes, circles,
+     * all sensors and painters, in part order. Wheel systems, wheels and art are not included.
+     */
+    public RsBodyShape[] getInteractiveBodyShapeArray() {
+        List<RsBodyShape> shapes = new ArrayList<>();
+        for (RsBodyShape s : partsOf(RsBodyShape.class)) {
+            if (!(s instanceof RsWheel)) {
+                shapes.add(s);
+            }
+        }
+        return shapes.toArray(new RsBodyShape[0]);
+    }
+
+    private <T extends RsBodyPart> List<T> partsOf(Class<T> type) {
+        List<T> list = new ArrayList<>();
+        for (RsBodyPart p : parts) {
+            if (type.isInstance(p)) {
+                list.add(type.cast(p));
+            }
+        }
+        return list;
+    }
+
+    /** The body name (null on the client if so constructed; "" after transmission). */
+    public String getName() {
+        return name;
+    }
+
+    /** The first part with exactly this name, looking into wheel systems too; null if none. */
+    public RsBodyPart getPartByName(String partName) {
+        for (RsBodyPart p : allParts()) {
+            if (partName != null && partName.equals(p.getName())) {
+                return p;
+            }
+        }
+        return null;
+    }
+
+    /** The part with this id, including the wheels of wheel systems; null if none. */
+    public RsBodyPart getPartByID(int id) {
+        for (RsBodyPart p : allParts()) {
+            if (p.getID() == id) {
+                return p;
+            }
+        }
+        return null;
+    }
+
+    /** Every part, each actuator followed by its sub-parts. */
+    private List<RsBodyPart> allParts() {
+        List<RsBodyPart> all = new ArrayList<>();
+        for (RsBodyPart p : parts) {
+            all.add(p);
+            if (p instanceof RsActuator) {
+                for (RsBodyPart sub : ((RsActuator) p).partsArray) {
+                    all.add(sub);
+                }
+            }
+        }
+        return all;
+    }
+
+    /** Copies the changing state (motion, placement, collision, part states) from another copy of this body. */
+    public void copyStateData(RsBody source) {
+        source.transferStateDataToBody(this);
+    }
+
+    /** Copies this body's changing state into {@code target}, a copy of the same body plan. */
+    protected void transferStateDataToBody(RsBody target) {
+        target.placement = placement;
+        target.collision = collision;
+        target.motion = copyOf(motion);
+        int n = Math.min(parts.size(), target.parts.size());
+        for (int i = 0; i < n; i++) {
+            target.parts.get(i).copyStateData(parts.get(i));
+        }
+    }
+
+    private static RsMotion copyOf(RsMotion m) {
+        if (m == null) {
+            return null;
+        }
+        try {
+            return (RsMotion) m.clone();
+        } catch (CloneNotSupportedException e) {
+            throw new IllegalStateException("motion cannot be copied", e);
+        }
+    }
+
+    /** Brings the wheels (encoders, casters) up to the current motion's current time. */
+    public void applyMotion() {
+        if (wheelSystem != null && motion != null) {
+            wheelSystem.applyMotion(motion);
+        }
+    }
+
+    /** Resets what a placement resets (wheel steering) and the collision flag. */
+    public void resetStateData() {
+        for (RsBodyPart p : parts) {
+            p.resetStateData();
+        }
+        collision = false;
+    }
+
+    /** Sets whether the current motion ends in a collision. */
+    public void setCollision(boolean collision) {
+        this.collision = collision;
+    }
+
+    /** Whether the current motion ends in a collision. */
+    public boolean getCollision() {
+        return collision;
+    }
+
+    /**
+     * The position report at {@code simTime}: the analytic pose of the current motion at that time
+     * (clamped to the motion; heading in (-pi, pi]) with the velocity and turn rate of that motion,
+     * even after it ended (behavior.md section 5.7). All zero before the first placement.
+     */
+    public RsPositionEvent getPositionEvent(double simTime) {
+        if (motion == null) {
+            return new RsPositionEvent(simTime, 0.0, 0.0, 0.0, 0.0, 0.0);
+        }
+        RsTransform pose = motion.getStateAtTime(simTime);
+        return new RsPositionEvent(simTime, pose.m13, pose.m23, pose.getTheta(),
+                motion.getVelocity(), motion.getTurnRate());
+    }
+
+    /**
+     * Evaluates every sensor at {@code pose} (target, range and paint sensors; contact sensors do not
+     * change here), in part order.
+     *
+     * @return whether any sensor's state changed (see {@link RsBodySensor#didStateChange()})
+     */
+    public boolean processSensors(double simTime, RsPlan plan, RsTransform pose) {
+        boolean changed = false;
+        for (RsBodySensor s : getBodySensorArray()) {
+            if (s.computeAndSetState(simTime, plan, pose)) {
+                changed = true;
+            }
+        }
+        return changed;
+    }
+
+    /**
+     * Replaces the motion by the one {@code request} produces from the current pose at {@code time}
+     * (behavior.md section 5.2), without a collision search.
+     */
+    public void computeMotion(double time, RsMotionRequest request) {
+        motion = wheelSystem != null
+                ? wheelSystem.computeMotion(motion, time, request)
+                : MotionRequests.motionFor(motion, time, request);
+        collision = false;
+    }
+
+    /**
+     * Starts a requested motion the way the simulator does: {@link #computeMotion(double,
+     * RsMotionRequest)}, then the collision search, which cuts the motion before its first contact
+     * (or replaces it by a null motion when that is at once) and flags contact sensors.
+     */
+    public void computeMotion(double time, RsMotionRequest request, RsPlan plan) {
+        computeMotion(time, request);
+        searchForCollisions(plan);
+    }
+
+    /** Replaces the current motion as is (no collision search). */
+    public void setMotion(RsMotion motion) {
+        this.motion = motion;
+    }
+
+    /** The current motion, or null before the first placement. */
+    public RsMotion getMotion() {
+        return motion;
+    }
+
+    /**
+     * Places the robot at (x, y) heading {@code orientation}: a fresh motion history (a new continuity
+     * series), straightened wheels, no collision; sensor, contact and encoder states are kept.
+     */
+    public void place(double time, double x, double y, double orientation) {
+        motion = new RsMotionNull(time, x, y, orientation);
+        resetStateData();
+        placement = true;
+    }
+
+    /** Draws every part in order at the current pose; {@code view} maps world metres to pixels. */
+    public void paint(Graphics g, RsTransform view) {
+        RsTransform t = motion == null ? new RsTransform(view) : new RsTransform(view, motion.transform);
+        for (RsBodyPart p : parts) {
+            p.paint(g, t);
+        }
+    }
+
+    /** Marks the robot placed (part of the simulation) or not. */
+    public void setPlacement(boolean placement) {
+        this.placement = placement;
+    }
+
+    /** Whether the robot is placed. */
+    public boolean getPlacement() {
+        return placement;
+    }
+
+    /**
+     * The collision search for the current motion (behavior.md sections 6.2 and 6.3): contact
+     * sensors are flagged first, then every interactive shape is swept over the whole motion; the
+     * motion is cut at the last whole millisecond before the first contact, and replaced by a null
+     * motion (at the start pose, collision flag clear) when that leaves nothing of it.
+     *
+     * @return whether a collision was predicted
+     */
+    protected boolean searchForCollisions(RsPlan plan) {
+        if (motion == null || plan == null) {
+            return false;
+        }
+        flagContactSensors(plan.getWallArray());
+        boolean hit = false;
+        for (RsBodyShape s : getInteractiveBodyShapeArray()) {
+            if (s.searchForCollisions(plan, motion)) {
+                hit = true;
+            }
+        }
+        if (motion.collision) {
+            motion.truncateForCollision();
+            if (motion.timeTotal == 0.0) {
+                motion = new RsMotionNull(motion, motion.time0);
+            }
+        }
+        collision = motion.collision;
+        return hit;
+    }
+
+    /**
+     * RP1 0.60's contact-sensor pre-pass, reproduced: each sensor that would hit a wall during the whole
+     * motion is flagged with the running minimum contact time over the sensors examined so far and the
+     * wall that last lowered it; afterwards only flags whose time exceeds the overall minimum are
+     * cleared, so a sensor examined after the earliest hit stays flagged even if its own hit is later.
+     */
+    private void flagContactSensors(RsWall[] walls) {
+        List<RsBodyContactSensor> sensors = partsOf(RsBodyContactSensor.class);
+        double best = Double.POSITIVE_INFINITY;
+        String bestWall = null;
+        for (RsBodyContactSensor s : sensors) {
+            RsSegment[] body = BodyOutline.map(s.outline(), motion.transform0);
+            boolean hit = false;
+            for (RsWall wall : walls) {
+                RsSegment[] edges = wall.getSegmentArray();
+                double t = motion.contactTime(body, body.length, edges, edges.length);
+                if (Double.isInfinite(t)) {
+                    continue;
+                }
+                hit = true;
+                if (t < best) {
+                    best = t;
+                    bestWall = wall.getName();
+                }
+            }
+            s.setCollision(hit, hit ? bestWall : null);
+            s.setCollisionTime(best);
+        }
+        for (RsBodyContactSensor s : sensors) {
+            if (s.getCollision() && s.getCollisionTime() > best) {
+                s.setCollision(false, null);
+            }
+        }
+    }
+
+    /**
+     * Behaviour at the start of a motion (behavior.md section 5.4 step 2e): every hot contact sensor
+     * not predicted to be touching at the start of the new motion goes cold.
+     *
+     * @return one event per released sensor, in part order, carrying the wall name the new motion's
+     *         collision search recorded ("" if none)
+     */
+    public RsContactSensorEvent[] releaseContactSensors(double simTime) {
+        List<RsContactSensorEvent> events = new ArrayList<>();
+        for (RsBodyContactSensor s : partsOf(RsBodyContactSensor.class)) {
+            if (s.getHot() && !s.isInContactAtMotionStart()) {
+                s.setHot(false);
+                events.add(s.getStateChangeEvent(simTime));
+            }
+        }
+        return events.toArray(new RsContactSensorEvent[0]);
+    }
+
+    /**
+     * Behaviour at the end of a motion cut short by a collision (section 5.4 step 5a): every flagged
+     * contact sensor that is not yet hot goes hot. Nothing happens if the motion had no collision.
+     *
+     * @return one event per pressed sensor, in part order, with the wall name
+     */
+    public RsContactSensorEvent[] pressContactSensors(double simTime) {
+        List<RsContactSensorEvent> events = new ArrayList<>();
+        if (motion == null || !motion.collision) {
+            return new RsContactSensorEvent[0];
+        }
+        for (RsBodyContactSensor s : partsOf(RsBodyContactSensor.class)) {
+            if (s.getCollision() && !s.getHot()) {
+                s.setHot(true);
+                events.add(s.getStateChangeEvent(simTime));
+            }
+        }
+        return events.toArray(new RsContactSensorEvent[0]);
+    }
+
+    /** The bounding box of the body at its current pose, world coordinates. */
+    public RsRectangle getBounds() {
+        updateRefBounds();
+        RsRectangle r = new RsRectangle(refBounds);
+        if (motion != null) {
+            r.transform(motion.transform);
+        }
+        return r;
+    }
+
+    /** The edges of the body-coordinate bounding box. */
+    public RsSegment[] getRefEnclosure() {
+        updateRefBounds();
+        return BodyOutline.copy(refEnclosure);
+    }
+
+    private void updateRefBounds() {
+        RsRectangle r = new RsRectangle();
+        for (RsBodyPart p : parts) {
+            if (p instanceof RsWheelSystem) {
+                ((RsWheelSystem) p).computeBounds();
+            }
+            r.union(p.refBounds);
+        }
+        refBounds = r;
+        double[] corners = BodyOutline.rectanglePoints(r.x + r.width / 2, r.y + r.height / 2, r.width, r.height);
+        refEnclosure = r.isPopulated() ? BodyOutline.edgesFromPoints(corners, 4) : new RsSegment[0];
+    }
+
+    /** A process-wide serial number of the body (bodies are not identified on the wire). */
+    public int getID() {
+        return bodyID;
+    }
+
+    /**
+     * The placement clear test (behavior.md section 7): whether any interactive shape, with the body
+     * at {@code pose}, crosses, lies inside or comes within 1e-4 m of a wall. A body without
+     * interactive shapes never overlaps.
+     */
+    public boolean checkForOverlap(RsPlan plan, RsTransform pose) {
+        for (RsBodyShape s : getInteractiveBodyShapeArray()) {
+            if (s.checkForOverlap(plan, pose)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    @Override
+    public String toString() {
+        return "RsBody[" + name + ", " + parts.size() + " parts]";
+    }
+}

@@ -1,0 +1,86 @@
+package rp1.rossum;
+
+import java.awt.Color;
+import rp1.rossum.event.RsSensorEvent;
+
+/**
+ * A body shape that senses something: a target, range, paint or contact sensor. A sensor is "hot"
+ * while it detects something (drawn in its hot colours; the default hot line colour is red). The
+ * simulator evaluates it at motion steps; {@link #didStateChange()} says whether the last evaluation
+ * changed what a client would be told, and {@link #getSensorEvent(double)} builds that report.
+ */
+public abstract class RsBodySensor extends RsBodyShape {
+    private static final long serialVersionUID = 1L;
+
+    /** Red, the default hot line colour of sensors. */
+    static final Color DEFAULT_HOT_LINE_COLOR = new Color(255, 0, 0);
+
+    protected boolean stateChange;
+    protected double timeStateComputed;
+
+    /** A sensor with the given outline (see {@link RsBodyShape#RsBodyShape(double[], int)}). */
+    public RsBodySensor(double[] point, int nPoint) {
+        super(point, nPoint);
+        hotLineColor = DEFAULT_HOT_LINE_COLOR;
+    }
+
+    @Override
+    public boolean isASensor() {
+        return true;
+    }
+
+    /** Whether the last {@link #computeAndSetState} changed the reportable state. */
+    public boolean didStateChange() {
+        return stateChange;
+    }
+
+    /** The simulation time of the last evaluation. */
+    public double getTimeOfLastStateComputation() {
+        return timeStateComputed;
+    }
+
+    /**
+     * Evaluates the sensor at simulation time {@code simTime} with the body at {@code pose} in
+     * {@code plan}, stores the new state and whether it changed.
+     *
+     * @return whether the state changed
+     */
+    public abstract boolean computeAndSetState(double simTime, RsPlan plan, RsTransform pose);
+
+    /** The current state as an event stamped {@code simTime}; the base sensor has none (null). */
+    public RsSensorEvent getSensorEvent(double simTime) {
+        return null;
+    }
+
+    /** Records the evaluation time and change flag; returns the flag. */
+    final boolean recordEvaluation(double simTime, boolean changed) {
+        timeStateComputed = simTime;
+        stateChange = changed;
+        return changed;
+    }
+
+    @Override
+    public void copyStateData(RsBodyPart source) {
+        super.copyStateData(source);
+        if (source instanceof RsBodySensor) {
+            RsBodySensor s = (RsBodySensor) source;
+            stateChange = s.stateChange;
+            timeStateComputed = s.timeStateComputed;
+        }
+    }
+
+    /** The x coordinate of a detector position, 0 before the first evaluation. */
+    static double xOf(RsPoint detector) {
+        return detector == null ? 0.0 : detector.x;
+    }
+
+    /** The y coordinate of a detector position, 0 before the first evaluation. */
+    static double yOf(RsPoint detector) {
+        return detector == null ? 0.0 : detector.y;
+    }
+
+    /** An empty string for null, as the wire delivers names. */
+    static String nameOrEmpty(String name) {
+        return name == null ? "" : name;
+    }
+}

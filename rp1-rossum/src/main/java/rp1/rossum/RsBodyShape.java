@@ -1,0 +1,111 @@
+package rp1.rossum;
+
+import java.awt.Graphics;
+
+/**
+ * A physical part of the robot with a polygonal outline (chassis, housing, bumper): drawn, and it
+ * collides with walls. The outline is given in body coordinates (x forward, y left, metres) and is
+ * closed automatically; edges shorter than 1 mm are dropped (protocol.md section 8.3). Sensors,
+ * painters, circles and wheels are shapes too.
+ */
+public class RsBodyShape extends RsBodyPart {
+    private static final long serialVersionUID = 1L;
+    /** Distance from a wall (metres) below which a placement is not clear. */
+    private static final double CLEARANCE = 1.0e-4;
+
+    /** The closed outline as edges, body coordinates. */
+    private RsSegment[] outline;
+
+    /** A shape with no outline (it neither collides nor draws). */
+    public RsBodyShape() {
+        outline = new RsSegment[0];
+    }
+
+    /**
+     * A shape through the first {@code nPoint} points of {@code point} (x0, y0, x1, y1, ...).
+     *
+     * @throws IllegalArgumentException if nPoint is negative or the array is too short
+     */
+    public RsBodyShape(double[] point, int nPoint) {
+        setOutline(point, nPoint);
+    }
+
+    /** Replaces the outline (used by subclasses that derive it from other parameters). */
+    final void setOutline(double[] point, int nPoint) {
+        outline = BodyOutline.edgesFromPoints(point, nPoint);
+        refBounds = BodyOutline.bounds(outline);
+    }
+
+    /** Copies of the outline's edges in body coordinates, in order. */
+    public RsSegment[] getSegmentArray() {
+        return BodyOutline.copy(outline);
+    }
+
+    /**
+     * The outline's vertices x0, y0, x1, y1, ... (the start point of every edge, first vertex not
+     * repeated): what a body specification transmits, and enough to rebuild the same outline.
+     */
+    public double[] getOutlineVertices() {
+        return PlanPolygons.openVertices(outline);
+    }
+
+    /** The number of edges (equal to the number of transmitted vertices). */
+    public int getOutlineEdgeCount() {
+        return outline.length;
+    }
+
+    /** The outline used for drawing; shared, not copied. */
+    RsSegment[] outline() {
+        return outline;
+    }
+
+    @Override
+    RsSegment[] collisionOutline() {
+        return outline;
+    }
+
+    /** Fills the outline, then draws it, in the current (hot or cold) colours; null colours are skipped. */
+    @Override
+    public void paint(Graphics g, RsTransform t) {
+        PlanPolygons.paint(g, t, outline, getFillColor(), getLineColor());
+    }
+
+    /**
+     * The placement clear test for this shape at {@code pose} (behavior.md section 7): true if any edge
+     * crosses a wall edge, any vertex is inside or within 1e-4 m of a wall polygon, or any wall vertex
+     * is inside or within 1e-4 m of this outline. A shape without an outline never overlaps.
+     */
+    public boolean checkForOverlap(RsPlan plan, RsTransform pose) {
+        if (outline.length == 0 || plan == null) {
+            return false;
+        }
+        RsSegment[] body = BodyOutline.map(outline, pose);
+        for (RsWall wall : plan.getWallArray()) {
+            if (wall.getPolygon() != null && overlaps(body, wall)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static boolean overlaps(RsSegment[] body, RsWall wall) {
+        RsSegment[] edges = wall.getSegmentArray();
+        RsSegSect sect = new RsSegSect();
+        for (RsSegment b : body) {
+            for (RsSegment w : edges) {
+                if (sect.process(b, w)) {
+                    return true;
+                }
+            }
+            if (wall.getPolygon().checkContainment(b.x, b.y, CLEARANCE) != RsPolygon.OUTSIDE) {
+                return true;
+            }
+        }
+        for (RsSegment w : edges) {
+            if (BodyOutline.insideOrNear(body, w.x, w.y, CLEARANCE)) {
+                return true;
+            }
+        }
+        return false;
+    }
+}
