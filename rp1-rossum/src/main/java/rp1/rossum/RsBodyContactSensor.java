@@ -80,4 +80,9 @@ public class RsBodyContactSensor extends RsBodySensor {
     public RsContactSensorEvent getStateChangeEvent(double simTime) {
         return new RsContactSensorEvent(simTime, getID(), hot, nameOrEmpty(collisionObjectName));
     }
+
+    /** Sends this sensor's state change (with the contacted wall's name) to a client connection. */
+    public void sendSensorEvent(RsConnection connection, double simTime) {
+        connection.sendContactSensorEvent(getStateChangeEvent(simTime));
+    }
 }

@@ -77,11 +77,21 @@ public class RsProtocol implements RsLogInterface {
     protected RsLogInterface logger;
     protected boolean verbosity;
 
+    /** Serializes whole messages on the output stream. */
     private final Object writeLock = new Object();
+    /**
+     * Guards the open/closed state. Separate from the write lock (and from this object's monitor) so
+     * that a session can be shut down while another thread is blocked writing to a peer that stopped
+     * reading: closing the stream is what releases that writer.
+     */
+    private final Object stateLock = new Object();
     private boolean loggerSet;
     private boolean closed;
     private RsProtocolShutdownHandler shutdownHandler;
     private WireIn wireIn;
+    /** The streams as given, closed directly on shutdown: closing the buffered wrappers would flush. */
+    private InputStream rawInput;
+    private OutputStream rawOutput;
 
     public RsProtocol() {
     }
@@ -98,7 +108,9 @@ public class RsProtocol implements RsLogInterface {
 
     /** Talks over these streams (buffered here); either may be null. */
     public void setInputOutputStreams(InputStream in, OutputStream out) {
-        synchronized (writeLock) {
+        synchronized (stateLock) {
+            rawInput = in;
+            rawOutput = out;
             input = in == null ? null : new DataInputStream(new BufferedInputStream(in));
             output = out == null ? null : new DataOutputStream(new BufferedOutputStream(out));
             wireIn = input == null ? null : new WireIn(input);
@@ -310,31 +322,38 @@ public class RsProtocol implements RsLogInterface {
 
     /** Whether this session has been shut down. */
     boolean isClosed() {
-        synchronized (writeLock) {
+        synchronized (stateLock) {
             return closed;
         }
     }
 
     /**
      * Ends the session: closes the streams and the socket and calls the shutdown handler, once.
-     * Further calls do nothing.
+     * Further calls do nothing. Takes no lock another thread could be holding while blocked on I/O.
      */
-    protected synchronized void shutdown() {
-        RsProtocolShutdownHandler handler;
-        synchronized (writeLock) {
+    protected void shutdown() {
+        InputStream in;
+        OutputStream out;
+        Socket s;
+        synchronized (stateLock) {
             if (closed) {
                 return;
             }
             closed = true;
-            closeQuietly(input);
-            closeQuietly(output);
-            closeQuietly(socket);
+            in = rawInput;
+            out = rawOutput;
+            s = socket;
+            rawInput = null;
+            rawOutput = null;
             input = null;
             output = null;
             socket = null;
             wireIn = null;
-            handler = shutdownHandler;
         }
+        closeQuietly(s);
+        closeQuietly(in);
+        closeQuietly(out);
+        RsProtocolShutdownHandler handler = shutdownHandler;
         if (handler != null) {
             handler.process();
         }

@@ -1,0 +1,46 @@
+package rp1.rossum;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import rp1.rossum.event.RsEventHandler;
+
+/**
+ * The client's event handlers, keyed by (event code, index) where the index is the sensor id for
+ * sensor events and 0 otherwise. Handlers for a key are kept in registration order. Dispatch works
+ * on a snapshot, so a handler may add or remove handlers while an event is being delivered.
+ */
+final class HandlerRegistry {
+    private final Map<Long, List<RsEventHandler>> handlers = new HashMap<>();
+
+    private static long key(int code, int index) {
+        return ((long) code << 32) | (index & 0xFFFFFFFFL);
+    }
+
+    /** Whether any handler is registered for the key. */
+    synchronized boolean has(int code, int index) {
+        List<RsEventHandler> list = handlers.get(key(code, index));
+        return list != null && !list.isEmpty();
+    }
+
+    synchronized void add(int code, int index, RsEventHandler handler) {
+        handlers.computeIfAbsent(key(code, index), k -> new ArrayList<>()).add(handler);
+    }
+
+    /** Removes the first registration of {@code handler} for the key, if any. */
+    synchronized void remove(int code, int index, RsEventHandler handler) {
+        List<RsEventHandler> list = handlers.get(key(code, index));
+        if (list != null) {
+            list.remove(handler);
+        }
+    }
+
+    /** The handlers for the key, in registration order, as a snapshot. */
+    synchronized List<RsEventHandler> snapshot(int code, int index) {
+        List<RsEventHandler> list = handlers.get(key(code, index));
+        return list == null ? Collections.emptyList() : new ArrayList<>(list);
+    }
+}

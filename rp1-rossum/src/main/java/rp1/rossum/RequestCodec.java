@@ -1,0 +1,260 @@
+package rp1.rossum;
+
+import java.awt.Color;
+import java.io.IOException;
+
+import rp1.rossum.request.RsActuatorControlRequest;
+import rp1.rossum.request.RsEncoderStatusRequest;
+import rp1.rossum.request.RsHaltRequest;
+import rp1.rossum.request.RsHeartbeatRequest;
+import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.request.RsPainterChangeRequest;
+import rp1.rossum.request.RsPlacementRequest;
+import rp1.rossum.request.RsPlanRequest;
+import rp1.rossum.request.RsRequest;
+import rp1.rossum.request.RsSensorRequest;
+import rp1.rossum.request.RsSubscriptionRequest;
+import rp1.rossum.request.RsTargetSelectionRequest;
+
+/**
+ * Encodes and decodes the body of a REQUEST transaction (protocol.md section 6): request code,
+ * request index (always written as 0), then the request's payload. Encoders return a complete
+ * payload in memory; the decoder hands each request to a {@link RequestSink}.
+ */
+final class RequestCodec {
+    private RequestCodec() {
+    }
+
+    private static WireOut prefix(int requestCode) {
+        return new WireOut().i32(requestCode).i32(0);
+    }
+
+    static WireOut timeout(double duration, int timeoutIndex) {
+        return prefix(RsRequest.REQ_TIMEOUT).f64(duration).i32(timeoutIndex);
+    }
+
+    static WireOut subscription(int eventCode, int eventIndex, boolean enable) {
+        return prefix(RsRequest.REQ_SUBSCRIPTION).i32(eventCode).i32(eventIndex).bool(enable);
+    }
+
+    static WireOut sensorStatus(int sensorID) {
+        return prefix(RsRequest.REQ_SENSOR_STATUS).i32(sensorID);
+    }
+
+    static WireOut motion(RsMotionRequest r) {
+        return prefix(RsRequest.REQ_MOTION).f64(r.linearVelocity).f64(r.rotationalVelocity).f64(r.duration);
+    }
+
+    static WireOut halt() {
+        return prefix(RsRequest.REQ_HALT);
+    }
+
+    static WireOut position() {
+        return prefix(RsRequest.REQ_POSITION);
+    }
+
+    /**
+     * A placement carries the name twice over: an i32 with the name's length in UTF-16 units (only
+     * zero or non-zero matters) and, if that is non-zero, the name as a STR.
+     */
+    static WireOut placement(String name) {
+        WireOut out = prefix(RsRequest.REQ_PLACEMENT);
+        int flag = name == null ? 0 : name.length();
+        out.i32(flag);
+        if (flag != 0) {
+            out.str(name);
+        }
+        return out;
+    }
+
+    static WireOut targetSelection(boolean random, String name, boolean status, boolean exclusive) {
+        return prefix(RsRequest.REQ_TARGET_SELECTION).bool(random).str(name).bool(status).bool(exclusive);
+    }
+
+    static WireOut plan() {
+        return prefix(RsRequest.REQ_PLAN);
+    }
+
+    static WireOut heartbeat(double interval) {
+        return prefix(RsRequest.REQ_HEARTBEAT).f64(interval);
+    }
+
+    static WireOut painterErasure(int painterID) {
+        return prefix(RsRequest.REQ_PAINTER_CHANGE).i32(painterID).bool(true);
+    }
+
+    static WireOut painterDeactivation(int painterID) {
+        return prefix(RsRequest.REQ_PAINTER_CHANGE).i32(painterID).bool(false).bool(false);
+    }
+
+    static WireOut painterActivation(int painterID, double x, double y, double width, Color[] colors) {
+        return prefix(RsRequest.REQ_PAINTER_CHANGE).i32(painterID).bool(false).bool(true).bool(true)
+                .f64(x).f64(y).f64(width).colorArray(colors);
+    }
+
+    static WireOut actuatorControl(RsActuatorControlRequest r) {
+        WireOut out = prefix(RsRequest.REQ_ACTUATOR_CONTROL).i32(r.actuatorID).i32(r.commandID);
+        String[] names = r.getParameterNames();
+        double[] values = r.getParameterValues();
+        out.i32(names.length);
+        for (int i = 0; i < names.length; i++) {
+            out.str(names[i]).f64(values[i]);
+        }
+        return out;
+    }
+
+    static WireOut encoderStatus(int requestIndex, int[] encoderIDs, boolean clearOnReport) {
+        WireOut out = prefix(RsRequest.REQ_ENCODER_STATUS).i32(requestIndex).i32(encoderIDs.length);
+        for (int id : encoderIDs) {
+            out.i32(id);
+        }
+        return out.bool(clearOnReport);
+    }
+
+    /**
+     * Encodes a request object (the server-side view of requests; clients use the typed methods).
+     * Position requests have no class and are encoded with {@link #position()}.
+     */
+    static WireOut encode(RsRequest r) {
+        switch (r.requestID) {
+            case RsRequest.REQ_SUBSCRIPTION: {
+                RsSubscriptionRequest s = (RsSubscriptionRequest) r;
+                return subscription(s.eventCode, s.eventIndex, s.eventEnable);
+            }
+            case RsRequest.REQ_SENSOR_STATUS:
+                return sensorStatus(((RsSensorRequest) r).sensorID);
+            case RsRequest.REQ_MOTION:
+                return motion((RsMotionRequest) r);
+            case RsRequest.REQ_HALT:
+                return halt();
+            case RsRequest.REQ_PLACEMENT:
+                return placement(((RsPlacementRequest) r).name);
+            case RsRequest.REQ_TARGET_SELECTION: {
+                RsTargetSelectionRequest t = (RsTargetSelectionRequest) r;
+                return targetSelection(t.random, t.name, t.status, t.exclusive);
+            }
+            case RsRequest.REQ_PLAN:
+                return plan();
+            case RsRequest.REQ_HEARTBEAT:
+                return heartbeat(((RsHeartbeatRequest) r).interval);
+            case RsRequest.REQ_PAINTER_CHANGE:
+                return painterChange((RsPainterChangeRequest) r);
+            case RsRequest.REQ_ACTUATOR_CONTROL:
+                return actuatorControl((RsActuatorControlRequest) r);
+            case RsRequest.REQ_ENCODER_STATUS: {
+                RsEncoderStatusRequest e = (RsEncoderStatusRequest) r;
+                return encoderStatus(e.requestIndex, e.encoderID, e.clearOnReport);
+            }
+            default:
+                throw new IllegalArgumentException("no object encoding for request " + r);
+        }
+    }
+
+    private static WireOut painterChange(RsPainterChangeRequest p) {
+        if (p.erasure) {
+            return painterErasure(p.painterID);
+        }
+        if (!p.activation) {
+            return painterDeactivation(p.painterID);
+        }
+        return painterActivation(p.painterID, p.xTrailer, p.yTrailer, p.wTrailer, p.color);
+    }
+
+    /** Reads everything after the header of a REQUEST transaction and hands it to {@code sink}. */
+    static void decode(WireIn in, RequestSink sink) throws IOException {
+        int code = in.i32("request code");
+        if (code < 0 || code > RsRequest.REQ_MAX_CODE) {
+            throw new RsProtocolException("request code", "unknown code " + code);
+        }
+        in.i32("request index");
+        switch (code) {
+            case RsRequest.REQ_TIMEOUT: {
+                double duration = in.f64("timeout duration");
+                sink.timeout(duration, in.i32("timeout index"));
+                break;
+            }
+            case RsRequest.REQ_SUBSCRIPTION:
+                sink.subscription(new RsSubscriptionRequest(in.i32("subscription event code"),
+                        in.i32("subscription event index"), in.bool("subscription enable")));
+                break;
+            case RsRequest.REQ_SENSOR_STATUS:
+                sink.sensorStatus(new RsSensorRequest(in.i32("sensor id")));
+                break;
+            case RsRequest.REQ_MOTION:
+                sink.motion(new RsMotionRequest(in.f64("motion linear velocity"),
+                        in.f64("motion rotational velocity"), in.f64("motion duration")));
+                break;
+            case RsRequest.REQ_HALT:
+                sink.halt(new RsHaltRequest());
+                break;
+            case RsRequest.REQ_POSITION:
+                sink.position();
+                break;
+            case RsRequest.REQ_SET_POSITION:
+                sink.setPosition();
+                break;
+            case RsRequest.REQ_PLACEMENT:
+                sink.placement(new RsPlacementRequest(
+                        in.i32("placement name flag") == 0 ? null : in.str("placement name")));
+                break;
+            case RsRequest.REQ_TARGET_SELECTION: {
+                boolean random = in.bool("target selection random");
+                String name = in.str("target selection name");
+                boolean status = in.bool("target selection status");
+                sink.targetSelection(new RsTargetSelectionRequest(random, name, status,
+                        in.bool("target selection exclusive")));
+                break;
+            }
+            case RsRequest.REQ_PLAN:
+                sink.plan(new RsPlanRequest());
+                break;
+            case RsRequest.REQ_HEARTBEAT:
+                sink.heartbeat(new RsHeartbeatRequest(in.f64("heartbeat interval")));
+                break;
+            case RsRequest.REQ_PAINTER_CHANGE:
+                sink.painterChange(decodePainterChange(in));
+                break;
+            case RsRequest.REQ_ACTUATOR_CONTROL:
+                sink.actuatorControl(decodeActuatorControl(in));
+                break;
+            default:
+                sink.encoderStatus(decodeEncoderStatus(in));
+                break;
+        }
+    }
+
+    private static RsPainterChangeRequest decodePainterChange(WireIn in) throws IOException {
+        int id = in.i32("painter id");
+        if (in.bool("painter erasure")) {
+            return new RsPainterChangeRequest(id, true, false, false, 0.0, 0.0, 0.0, null);
+        }
+        if (!in.bool("painter activation")) {
+            return new RsPainterChangeRequest(id, false, false, false, 0.0, 0.0, 0.0, null);
+        }
+        boolean defined = in.bool("painter trailer defined");
+        double x = in.f64("painter trailer x");
+        double y = in.f64("painter trailer y");
+        double w = in.f64("painter trailer width");
+        return new RsPainterChangeRequest(id, false, true, defined, x, y, w, in.colorArray("painter colors"));
+    }
+
+    private static RsActuatorControlRequest decodeActuatorControl(WireIn in) throws IOException {
+        RsActuatorControlRequest r = new RsActuatorControlRequest(in.i32("actuator id"), in.i32("actuator command"));
+        int n = in.count("actuator parameter count", WireLimits.MAX_ACTUATOR_PARAMETERS);
+        for (int i = 0; i < n; i++) {
+            String name = in.str("actuator parameter " + i + " name");
+            r.addParameter(name, in.f64("actuator parameter " + i + " value"));
+        }
+        return r;
+    }
+
+    private static RsEncoderStatusRequest decodeEncoderStatus(WireIn in) throws IOException {
+        int index = in.i32("encoder request index");
+        int n = in.count("encoder id count", WireLimits.MAX_ENCODERS);
+        int[] ids = new int[n];
+        for (int i = 0; i < n; i++) {
+            ids[i] = in.i32("encoder id " + i);
+        }
+        return new RsEncoderStatusRequest(index, ids, in.bool("encoder clear on report"));
+    }
+}

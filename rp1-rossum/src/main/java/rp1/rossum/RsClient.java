@@ -1,0 +1,698 @@
+package rp1.rossum;
+
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Paths;
+import java.util.List;
+import java.util.Objects;
+
+import rp1.rossum.event.RsContactSensorEvent;
+import rp1.rossum.event.RsContactSensorEventHandler;
+import rp1.rossum.event.RsEncoderStatusEvent;
+import rp1.rossum.event.RsEncoderStatusEventHandler;
+import rp1.rossum.event.RsEvent;
+import rp1.rossum.event.RsEventHandler;
+import rp1.rossum.event.RsHeartbeatEvent;
+import rp1.rossum.event.RsHeartbeatEventHandler;
+import rp1.rossum.event.RsMotionHaltedEvent;
+import rp1.rossum.event.RsMotionHaltedEventHandler;
+import rp1.rossum.event.RsMotionStartedEvent;
+import rp1.rossum.event.RsMotionStartedEventHandler;
+import rp1.rossum.event.RsMouseClickEvent;
+import rp1.rossum.event.RsMouseClickEventHandler;
+import rp1.rossum.event.RsPaintSensorEvent;
+import rp1.rossum.event.RsPaintSensorEventHandler;
+import rp1.rossum.event.RsPlacementEvent;
+import rp1.rossum.event.RsPlacementEventHandler;
+import rp1.rossum.event.RsPlanEvent;
+import rp1.rossum.event.RsPlanEventHandler;
+import rp1.rossum.event.RsPositionEvent;
+import rp1.rossum.event.RsPositionEventHandler;
+import rp1.rossum.event.RsRangeSensorEvent;
+import rp1.rossum.event.RsRangeSensorEventHandler;
+import rp1.rossum.event.RsTargetSelectionEvent;
+import rp1.rossum.event.RsTargetSelectionEventHandler;
+import rp1.rossum.event.RsTargetSensorEvent;
+import rp1.rossum.event.RsTargetSensorEventHandler;
+import rp1.rossum.event.RsTimeoutEvent;
+import rp1.rossum.event.RsTimeoutEventHandler;
+import rp1.rossum.request.RsActuatorControlRequest;
+import rp1.rossum.request.RsMotionRequest;
+
+/**
+ * A robot client's session with the simulator: the "brain" side of RP1. Extend it (or hold one),
+ * call {@link #initialize()} to connect, send the robot's body with {@link #sendBodySpecification},
+ * register event handlers, send requests, and call {@link #run()} to enter the event loop, which
+ * returns when the session ends.
+ *
+ * <p>Handlers run on the thread executing {@code run()}, in registration order per event, until one
+ * calls {@code event.consume()}. When the server runs with the interlock enabled, the
+ * acknowledgement of an event is sent after its last handler has returned, so the simulation clock
+ * stands still while the handlers work. The {@code send...} methods may be called from any thread.
+ */
+public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
+    /** The configuration {@link #initialize()} uses; created there if still null. */
+    public RsProperties rsProperties;
+
+    private final HandlerRegistry registry = new HandlerRegistry();
+    /** Written by the event loop without taking this object's monitor, which senders may hold. */
+    private volatile double simTime;
+    private int timeoutIndex;
+    private int encoderRequestIndex;
+
+    public RsClient() {
+    }
+
+    /**
+     * Prepares the session: loads properties if none were given (the library defaults, then
+     * {@code rossum.ini} from the working directory or else from next to this object's class), creates
+     * a logger unless one was set, and connects to the server unless streams were supplied
+     * (in-process clients get theirs from the server).
+     *
+     * @throws IOException if the server cannot be reached or the handshake fails
+     */
+    @Override
+    public void initialize() throws IOException {
+        if (rsProperties == null) {
+            rsProperties = loadClientProperties();
+        }
+        if (!isLoggerSet()) {
+            initiateLogger(rsProperties);
+        }
+        if (!isInputSet()) {
+            initiateConnection(rsProperties);
+        }
+    }
+
+    /** Uses {@code properties} instead of reading {@code rossum.ini}, then {@link #initialize()}. */
+    public void initialize(RsProperties properties) throws IOException {
+        rsProperties = properties;
+        initialize();
+    }
+
+    private RsProperties loadClientProperties() {
+        RsProperties p = new RsProperties();
+        try {
+            if (Files.isRegularFile(Paths.get(RsProperties.FILE_NAME))) {
+                p.loadFromFile(RsProperties.FILE_NAME);
+                System.err.println("RsClient properties loaded from local file " + RsProperties.FILE_NAME);
+            } else {
+                p.loadFromResource(this, RsProperties.FILE_NAME);
+            }
+        } catch (RsPropertiesException e) {
+            System.err.println("RsClient: " + e.getMessage() + "; using defaults");
+        }
+        return p;
+    }
+
+    /** Creates the logger the properties ask for (none if neither file nor standard output is wanted). */
+    public synchronized void initiateLogger(RsProperties p) throws IOException {
+        if (!p.logToFile && !p.logToSystemOut) {
+            setLogger(null);
+            return;
+        }
+        if (p.logToFile) {
+            RsLogger.open(p.logFileName).close();
+        }
+        RsLogger l = new RsLogger(p.logToFile ? p.logFileName : null, p.logToSystemOut);
+        l.setVerbosity(p.logVerbose);
+        setLogger(l);
+    }
+
+    /** Opens a socket to {@code p.hostName:p.port} and performs the CONNECT/ACCEPT handshake. */
+    public synchronized void initiateConnection(RsProperties p) throws IOException {
+        Socket s = new Socket();
+        try {
+            s.connect(new InetSocketAddress(p.hostName, p.port));
+            setSocket(s);
+            exchangeIntroductions();
+        } catch (IOException e) {
+            s.close();
+            throw new IOException("cannot connect to the RP1 server at " + p.hostName + ":" + p.port + ": " + e.getMessage(), e);
+        }
+        log("Connected to RP1 server at " + p.hostName + ":" + p.port);
+    }
+
+    public RsProperties getProperties() {
+        return rsProperties;
+    }
+
+    /**
+     * The handshake: CONNECT (client id and key 0, sequence 0), then ACCEPT, whose client id and key
+     * this client adopts.
+     */
+    protected void exchangeIntroductions() throws IOException {
+        clientID = 0;
+        clientKey = 0;
+        sendWithCurrentSequence(CONNECT);
+        WireIn in = wire();
+        int version = in.firstI32("ACCEPT version");
+        if (version != VERSION) {
+            throw new RsProtocolException("ACCEPT version", "expected " + VERSION + ", got " + version);
+        }
+        int id = in.i32("ACCEPT client id");
+        int key = in.i32("ACCEPT client key");
+        serverSequence = in.i32("ACCEPT sequence");
+        int code = in.i32("ACCEPT transaction code");
+        if (code != ACCEPT) {
+            throw new RsProtocolException("ACCEPT transaction code", "expected ACCEPT (2), got " + describeTransaction(code));
+        }
+        clientID = id;
+        clientKey = key;
+    }
+
+    // ----------------------------------------------------------------------------------------------
+    // Handler registration. The seven simulation-generated event types are subscribed when their
+    // first handler for a key is added and unsubscribed on every removal, as RP1 0.60 does.
+
+    public synchronized void addMouseClickEventHandler(RsMouseClickEventHandler h) {
+        addSubscribed(RsEvent.EVT_MOUSE_CLICK, 0, h);
+    }
+
+    public synchronized void removeMouseClickEventHandler() {
+        removeSubscribed(RsEvent.EVT_MOUSE_CLICK, 0, null);
+    }
+
+    public synchronized void removeMouseClickEventHandler(RsMouseClickEventHandler h) {
+        removeSubscribed(RsEvent.EVT_MOUSE_CLICK, 0, h);
+    }
+
+    public synchronized void addMotionStartedEventHandler(RsMotionStartedEventHandler h) {
+        addSubscribed(RsEvent.EVT_MOTION_STARTED, 0, h);
+    }
+
+    public synchronized void removeMotionStartedEventHandler() {
+        removeSubscribed(RsEvent.EVT_MOTION_STARTED, 0, null);
+    }
+
+    public synchronized void removeMotionStartedEventHandler(RsMotionStartedEventHandler h) {
+        removeSubscribed(RsEvent.EVT_MOTION_STARTED, 0, h);
+    }
+
+    public synchronized void addMotionHaltedEventHandler(RsMotionHaltedEventHandler h) {
+        addSubscribed(RsEvent.EVT_MOTION_HALTED, 0, h);
+    }
+
+    public synchronized void removeMotionHaltedEventHandler() {
+        removeSubscribed(RsEvent.EVT_MOTION_HALTED, 0, null);
+    }
+
+    /**
+     * Removes {@code h} from the motion-halted handlers. The parameter type is the original API's
+     * (a motion-started handler type); it matters only for a class implementing both interfaces.
+     */
+    public synchronized void removeMotionHaltedEventHandler(RsMotionStartedEventHandler h) {
+        removeSubscribed(RsEvent.EVT_MOTION_HALTED, 0, h);
+    }
+
+    public synchronized void addTargetSensorEventHandler(RsBodyTargetSensor s, RsTargetSensorEventHandler h) {
+        addSubscribed(RsEvent.EVT_TARGET_SENSOR, sensorId(s), h);
+    }
+
+    public synchronized void removeTargetSensorEventHandler(RsBodyTargetSensor s) {
+        removeSubscribed(RsEvent.EVT_TARGET_SENSOR, sensorId(s), null);
+    }
+
+    public synchronized void removeTargetSensorEventHandler(RsBodyTargetSensor s, RsTargetSensorEventHandler h) {
+        removeSubscribed(RsEvent.EVT_TARGET_SENSOR, sensorId(s), h);
+    }
+
+    public synchronized void addContactSensorEventHandler(RsBodyContactSensor s, RsContactSensorEventHandler h) {
+        addSubscribed(RsEvent.EVT_CONTACT_SENSOR, sensorId(s), h);
+    }
+
+    public synchronized void removeContactSensorEventHandler(RsBodyContactSensor s) {
+        removeSubscribed(RsEvent.EVT_CONTACT_SENSOR, sensorId(s), null);
+    }
+
+    public synchronized void removeContactSensorEventHandler(RsBodyContactSensor s, RsContactSensorEventHandler h) {
+        removeSubscribed(RsEvent.EVT_CONTACT_SENSOR, sensorId(s), h);
+    }
+
+    public synchronized void addRangeSensorEventHandler(RsBodyRangeSensor s, RsRangeSensorEventHandler h) {
+        addSubscribed(RsEvent.EVT_RANGE_SENSOR, sensorId(s), h);
+    }
+
+    public synchronized void removeRangeSensorEventHandler(RsBodyRangeSensor s) {
+        removeSubscribed(RsEvent.EVT_RANGE_SENSOR, sensorId(s), null);
+    }
+
+    public synchronized void removeRangeSensorEventHandler(RsBodyRangeSensor s, RsRangeSensorEventHandler h) {
+        removeSubscribed(RsEvent.EVT_RANGE_SENSOR, sensorId(s), h);
+    }
+
+    public synchronized void addPaintSensorEventHandler(RsBodyPaintSensor s, RsPaintSensorEventHandler h) {
+        addSubscribed(RsEvent.EVT_PAINT_SENSOR, sensorId(s), h);
+    }
+
+    public synchronized void removePaintSensorEventHandler(RsBodyPaintSensor s) {
+        removeSubscribed(RsEvent.EVT_PAINT_SENSOR, sensorId(s), null);
+    }
+
+    public synchronized void removePaintSensorEventHandler(RsBodyPaintSensor s, RsPaintSensorEventHandler h) {
+        removeSubscribed(RsEvent.EVT_PAINT_SENSOR, sensorId(s), h);
+    }
+
+    public synchronized void addTimeoutEventHandler(RsTimeoutEventHandler h) {
+        addLocal(RsEvent.EVT_TIMEOUT, h);
+    }
+
+    public synchronized void removeTimeoutEventHandler() {
+        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+    }
+
+    public synchronized void removeTimeoutEventHandler(RsTimeoutEventHandler h) {
+        registry.remove(RsEvent.EVT_TIMEOUT, 0, h);
+    }
+
+    public synchronized void addPositionEventHandler(RsPositionEventHandler h) {
+        addLocal(RsEvent.EVT_POSITION, h);
+    }
+
+    public synchronized void removePositionEventHandler() {
+        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+    }
+
+    public synchronized void removePositionEventHandler(RsPositionEventHandler h) {
+        registry.remove(RsEvent.EVT_POSITION, 0, h);
+    }
+
+    public synchronized void addPlacementEventHandler(RsPlacementEventHandler h) {
+        addLocal(RsEvent.EVT_PLACEMENT, h);
+    }
+
+    public synchronized void removePlacementEventHandler() {
+        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+    }
+
+    public synchronized void removePlacementEventHandler(RsPlacementEventHandler h) {
+        registry.remove(RsEvent.EVT_PLACEMENT, 0, h);
+    }
+
+    public synchronized void addTargetSelectionEventHandler(RsTargetSelectionEventHandler h) {
+        addLocal(RsEvent.EVT_TARGET_SELECTION, h);
+    }
+
+    public synchronized void removeTargetSelectionEventHandler() {
+        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+    }
+
+    public synchronized void removeTargetSelectionEventHandler(RsTargetSelectionEventHandler h) {
+        registry.remove(RsEvent.EVT_TARGET_SELECTION, 0, h);
+    }
+
+    public synchronized void addPlanEventHandler(RsPlanEventHandler h) {
+        addLocal(RsEvent.EVT_PLAN, h);
+    }
+
+    public synchronized void removePlanEventHandler() {
+        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+    }
+
+    public synchronized void removePlanEventHandler(RsPlanEventHandler h) {
+        registry.remove(RsEvent.EVT_PLAN, 0, h);
+    }
+
+    public synchronized void addHeartbeatEventHandler(RsHeartbeatEventHandler h) {
+        addLocal(RsEvent.EVT_HEARTBEAT, h);
+    }
+
+    public synchronized void removeHeartbeatEventHandler() {
+        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+    }
+
+    public synchronized void removeHeartbeatEventHandler(RsHeartbeatEventHandler h) {
+        registry.remove(RsEvent.EVT_HEARTBEAT, 0, h);
+    }
+
+    public synchronized void addEncoderStatusEventHandler(RsEncoderStatusEventHandler h) {
+        addLocal(RsEvent.EVT_ENCODER_STATUS, h);
+    }
+
+    public synchronized void removeEncoderStatusEventHandler() {
+        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+    }
+
+    public synchronized void removeEncoderStatusEventHandler(RsEncoderStatusEventHandler h) {
+        registry.remove(RsEvent.EVT_ENCODER_STATUS, 0, h);
+    }
+
+    private static int sensorId(RsBodySensor sensor) {
+        return Objects.requireNonNull(sensor, "sensor").getID();
+    }
+
+    private static void requireHandler(RsEventHandler h) {
+        if (h == null) {
+            throw new Error("RsClient: attempt to register a null event handler");
+        }
+    }
+
+    private void addLocal(int code, RsEventHandler h) {
+        requireHandler(h);
+        registry.add(code, 0, h);
+    }
+
+    /**
+     * The subscription goes out before the handler is stored and only for the first handler of a key;
+     * before the connection exists it is skipped (and, a handler now existing, never sent later).
+     */
+    private void addSubscribed(int code, int index, RsEventHandler h) {
+        requireHandler(h);
+        if (!registry.has(code, index)) {
+            sendSubscription(code, index, true);
+        }
+        registry.add(code, index, h);
+    }
+
+    /** Unsubscribes on every removal; {@code h == null} (the no-argument forms) removes nothing locally. */
+    private void removeSubscribed(int code, int index, RsEventHandler h) {
+        sendSubscription(code, index, false);
+        if (h != null) {
+            registry.remove(code, index, h);
+        }
+    }
+
+    private void sendSubscription(int code, int index, boolean enable) {
+        if (isOutputSet()) {
+            sendRequest(RequestCodec.subscription(code, index, enable));
+        }
+    }
+
+    // ----------------------------------------------------------------------------------------------
+    // Requests.
+
+    /**
+     * Asks for a timeout event after {@code duration} seconds of simulation time.
+     *
+     * @return the timeout's index (1, 2, 3, ... per client), echoed in the timeout event
+     */
+    public synchronized int sendTimeoutRequest(double duration) {
+        int index = ++timeoutIndex;
+        sendRequest(RequestCodec.timeout(duration, index));
+        return index;
+    }
+
+    /** Asks for the sensor's current state as a sensor event, whatever the subscriptions. */
+    public synchronized void sendSensorStatusRequest(RsBodySensor sensor) {
+        sendRequest(RequestCodec.sensorStatus(sensorId(sensor)));
+    }
+
+    public synchronized void sendMotionRequest(RsMotionRequest r) {
+        sendRequest(RequestCodec.motion(Objects.requireNonNull(r, "motion request")));
+    }
+
+    public synchronized void sendPositionRequest() {
+        sendRequest(RequestCodec.position());
+    }
+
+    /**
+     * Asks to be placed at the named placement; null or "" for a random one of the plan's placements,
+     * "$random" for a random free pose.
+     */
+    public synchronized void sendPlacementRequest(String name) {
+        sendRequest(RequestCodec.placement(name));
+    }
+
+    public synchronized void sendHaltRequest() {
+        sendRequest(RequestCodec.halt());
+    }
+
+    public synchronized void sendTargetSelectionRequest(String targetName, boolean status) {
+        sendRequest(RequestCodec.targetSelection(false, targetName, status, false));
+    }
+
+    public synchronized void sendExclusiveTargetSelectionRequest(String targetName) {
+        sendRequest(RequestCodec.targetSelection(false, targetName, true, true));
+    }
+
+    public synchronized void sendRandomTargetSelectionRequest(boolean status) {
+        sendRequest(RequestCodec.targetSelection(true, null, status, false));
+    }
+
+    public synchronized void sendExclusiveRandomTargetSelectionRequest() {
+        sendRequest(RequestCodec.targetSelection(true, null, true, true));
+    }
+
+    public synchronized void sendAllTargetsSelectionRequest(boolean status) {
+        sendRequest(RequestCodec.targetSelection(false, "*", status, false));
+    }
+
+    public synchronized void sendPlanRequest() {
+        sendRequest(RequestCodec.plan());
+    }
+
+    /** Asks for a heartbeat event every {@code period} seconds of simulation time (0 cancels). */
+    public synchronized void sendHeartbeatRequest(double period) {
+        sendRequest(RequestCodec.heartbeat(period));
+    }
+
+    public synchronized void sendHeartbeatCancellationRequest() {
+        sendRequest(RequestCodec.heartbeat(0.0));
+    }
+
+    /**
+     * Starts the painter's trail. A painter without a colour, or whose trailer was never positioned or
+     * sized, cannot paint: a deactivation is sent instead (RP1 0.60 sent a truncated message in the
+     * second case, corrupting the stream).
+     */
+    public synchronized void sendPainterActivationRequest(RsBodyPainter painter) {
+        Objects.requireNonNull(painter, "painter");
+        if (painter.getPaintColors() == null || !painter.isTrailerDefined()) {
+            sendPainterDeactivationRequest(painter);
+            return;
+        }
+        painter.setPainterActivationStatus(true);
+        sendRequest(RequestCodec.painterActivation(painter.getID(), painter.getTrailerX(), painter.getTrailerY(),
+                painter.getTrailerWidth(), painter.getPaintColors()));
+    }
+
+    public synchronized void sendPainterDeactivationRequest(RsBodyPainter painter) {
+        Objects.requireNonNull(painter, "painter").setPainterActivationStatus(false);
+        sendRequest(RequestCodec.painterDeactivation(painter.getID()));
+    }
+
+    public synchronized void sendPainterErasureRequest(RsBodyPainter painter) {
+        sendRequest(RequestCodec.painterErasure(Objects.requireNonNull(painter, "painter").getID()));
+    }
+
+    /**
+     * Sends an actuator command. A command without parameters has nothing for the simulator to
+     * apply: a parameterless HALT (what {@code getControlRequestForWheelRotation(0, 0)} returns) is
+     * sent as a halt request, any other parameterless command is dropped with a log line. (RP1 0.60
+     * left a partial message in the stream here.)
+     */
+    public synchronized void sendActuatorControlRequest(RsActuatorControlRequest r) {
+        Objects.requireNonNull(r, "actuator control request");
+        if (r.getParameterNames().length > 0) {
+            sendRequest(RequestCodec.actuatorControl(r));
+        } else if (r.commandID == RsActuatorControlRequest.HALT) {
+            sendRequest(RequestCodec.halt());
+        } else {
+            log("RsClient: actuator command " + r.commandID + " without parameters not sent");
+        }
+    }
+
+    /** Asks for the encoder's state; returns the request index, or -1 (nothing sent) if it is null. */
+    public synchronized int sendEncoderStatusRequest(RsEncoder encoder, boolean clearOnRequest) {
+        return sendEncoderStatusRequest(new RsEncoder[] {encoder}, clearOnRequest);
+    }
+
+    /**
+     * Asks for the encoders' states, one event each in this order; returns the request index (1, 2,
+     * ... per client), or -1 (nothing sent) if the array or any element is null.
+     */
+    public synchronized int sendEncoderStatusRequest(RsEncoder[] encoders, boolean clearOnRequest) {
+        if (encoders == null) {
+            return -1;
+        }
+        int[] ids = new int[encoders.length];
+        for (int i = 0; i < encoders.length; i++) {
+            if (encoders[i] == null) {
+                return -1;
+            }
+            ids[i] = encoders[i].getID();
+        }
+        int index = ++encoderRequestIndex;
+        sendRequest(RequestCodec.encoderStatus(index, ids, clearOnRequest));
+        return index;
+    }
+
+    /**
+     * Describes the robot to the simulator; send it once, before any request about the robot.
+     *
+     * @throws IllegalArgumentException if the body has no part that can be transmitted
+     */
+    public synchronized void sendBodySpecification(RsBody body) {
+        WireOut payload = new WireOut();
+        BodyCodec.encode(payload, Objects.requireNonNull(body, "body"));
+        sendMessage(BODY_SPECIFICATION, payload);
+    }
+
+    private void sendRequest(WireOut payload) {
+        sendMessage(REQUEST, payload);
+    }
+
+    /**
+     * Sends a message; an I/O failure ends the session. After the session has ended requests are
+     * dropped (RP1 0.60 threw NullPointerException); before it was ever connected they are a mistake.
+     */
+    private void sendMessage(int transactionCode, WireOut payload) {
+        if (isClosed()) {
+            verbose("RsClient: session closed, " + transactionName[transactionCode] + " not sent");
+            return;
+        }
+        if (!isOutputSet()) {
+            throw new IllegalStateException("RsClient is not connected: call initialize() before sending");
+        }
+        try {
+            send(transactionCode, payload);
+        } catch (IOException e) {
+            terminate("RsClient terminating on output failure: " + e.getMessage());
+        }
+    }
+
+    // ----------------------------------------------------------------------------------------------
+    // Event loop.
+
+    /**
+     * The event loop: reads events and calls their handlers until the server goes away or breaks the
+     * protocol, then shuts the session down (calling the shutdown handler) and returns.
+     */
+    @Override
+    public void run() {
+        while (true) {
+            EventCodec.Decoded d;
+            try {
+                d = readEvent();
+            } catch (EOFException e) {
+                terminate("RsClient terminating: the server closed the connection");
+                return;
+            } catch (IOException e) {
+                terminate("RsClient terminating: " + e.getMessage());
+                return;
+            }
+            dispatch(d.event);
+            if (d.interlock > 0) {
+                acknowledge(d.interlock);
+            }
+        }
+    }
+
+    private EventCodec.Decoded readEvent() throws IOException {
+        int code = readHeader();
+        if (code != EVENT) {
+            throw new RsProtocolException("header transaction code",
+                    "a client accepts only EVENT (3), got " + describeTransaction(code));
+        }
+        EventCodec.Decoded d = EventCodec.decode(wire());
+        simTime = d.event.simTime;
+        return d;
+    }
+
+    private void acknowledge(int interlock) {
+        try {
+            send(INTERLOCK, new WireOut().i32(interlock));
+        } catch (IOException e) {
+            terminate("RsClient terminating on output failure: " + e.getMessage());
+        }
+    }
+
+    /** Reports why the session ends (in the log, or on standard error without one) and shuts it down. */
+    private void terminate(String notice) {
+        if (!isClosed()) {
+            report(notice);
+        }
+        shutdown();
+    }
+
+    private void report(String message) {
+        if (logger != null) {
+            logIt("X", message);
+        } else {
+            System.err.println(message);
+        }
+    }
+
+    /** Calls the event's handlers in registration order until one consumes it. */
+    private void dispatch(RsEvent e) {
+        List<RsEventHandler> handlers = registry.snapshot(e.eventID, e.getIndex());
+        for (RsEventHandler h : handlers) {
+            if (e.isConsumed()) {
+                return;
+            }
+            try {
+                deliver(h, e);
+            } catch (RuntimeException ex) {
+                reportHandlerFailure(h, e, ex);
+            }
+        }
+    }
+
+    /**
+     * A handler that throws is reported and the event goes on to the remaining handlers: letting the
+     * exception escape would end the event loop without closing the session, and with the interlock
+     * on, freeze the simulation.
+     */
+    private void reportHandlerFailure(RsEventHandler h, RsEvent e, RuntimeException ex) {
+        StringWriter trace = new StringWriter();
+        ex.printStackTrace(new PrintWriter(trace));
+        report("RsClient: handler " + h.getClass().getName() + " failed on " + e + ": " + trace);
+    }
+
+    private static void deliver(RsEventHandler h, RsEvent e) {
+        switch (e.eventID) {
+            case RsEvent.EVT_CONTACT_SENSOR:
+                ((RsContactSensorEventHandler) h).process((RsContactSensorEvent) e);
+                break;
+            case RsEvent.EVT_MOUSE_CLICK:
+                ((RsMouseClickEventHandler) h).process((RsMouseClickEvent) e);
+                break;
+            case RsEvent.EVT_POSITION:
+                ((RsPositionEventHandler) h).process((RsPositionEvent) e);
+                break;
+            case RsEvent.EVT_RANGE_SENSOR:
+                ((RsRangeSensorEventHandler) h).process((RsRangeSensorEvent) e);
+                break;
+            case RsEvent.EVT_TARGET_SENSOR:
+                ((RsTargetSensorEventHandler) h).process((RsTargetSensorEvent) e);
+                break;
+            case RsEvent.EVT_TIMEOUT:
+                ((RsTimeoutEventHandler) h).process((RsTimeoutEvent) e);
+                break;
+            case RsEvent.EVT_MOTION_STARTED:
+                ((RsMotionStartedEventHandler) h).process((RsMotionStartedEvent) e);
+                break;
+            case RsEvent.EVT_MOTION_HALTED:
+                ((RsMotionHaltedEventHandler) h).process((RsMotionHaltedEvent) e);
+                break;
+            case RsEvent.EVT_PLACEMENT:
+                ((RsPlacementEventHandler) h).process((RsPlacementEvent) e);
+                break;
+            case RsEvent.EVT_TARGET_SELECTION:
+                ((RsTargetSelectionEventHandler) h).process((RsTargetSelectionEvent) e);
+                break;
+            case RsEvent.EVT_PLAN:
+                ((RsPlanEventHandler) h).process((RsPlanEvent) e);
+                break;
+            case RsEvent.EVT_PAINT_SENSOR:
+                ((RsPaintSensorEventHandler) h).process((RsPaintSensorEvent) e);
+                break;
+            case RsEvent.EVT_HEARTBEAT:
+                ((RsHeartbeatEventHandler) h).process((RsHeartbeatEvent) e);
+                break;
+            default:
+                ((RsEncoderStatusEventHandler) h).process((RsEncoderStatusEvent) e);
+                break;
+        }
+    }
+
+    /** The simulation time of the last event received (0 before any; a plan event resets it to 0). */
+    public synchronized double getSimTime() {
+        return simTime;
+    }
+}

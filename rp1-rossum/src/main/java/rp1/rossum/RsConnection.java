@@ -1,0 +1,479 @@
+package rp1.rossum;
+
+import java.io.EOFException;
+import java.io.IOException;
+import java.util.HashSet;
+import java.util.Set;
+
+import rp1.rossum.event.RsContactSensorEvent;
+import rp1.rossum.event.RsEncoderStatusEvent;
+import rp1.rossum.event.RsEvent;
+import rp1.rossum.event.RsHeartbeatEvent;
+import rp1.rossum.event.RsMotionHaltedEvent;
+import rp1.rossum.event.RsMotionStartedEvent;
+import rp1.rossum.event.RsMouseClickEvent;
+import rp1.rossum.event.RsPaintSensorEvent;
+import rp1.rossum.event.RsPlacementEvent;
+import rp1.rossum.event.RsPlanEvent;
+import rp1.rossum.event.RsPositionEvent;
+import rp1.rossum.event.RsRangeSensorEvent;
+import rp1.rossum.event.RsTargetSelectionEvent;
+import rp1.rossum.event.RsTargetSensorEvent;
+import rp1.rossum.event.RsTimeoutEvent;
+import rp1.rossum.request.RsActuatorControlRequest;
+import rp1.rossum.request.RsActuatorControlRequestHandler;
+import rp1.rossum.request.RsEncoderStatusRequest;
+import rp1.rossum.request.RsEncoderStatusRequestHandler;
+import rp1.rossum.request.RsHaltRequest;
+import rp1.rossum.request.RsHaltRequestHandler;
+import rp1.rossum.request.RsHeartbeatRequest;
+import rp1.rossum.request.RsHeartbeatRequestHandler;
+import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.request.RsMotionRequestHandler;
+import rp1.rossum.request.RsPainterChangeRequest;
+import rp1.rossum.request.RsPainterChangeRequestHandler;
+import rp1.rossum.request.RsPlacementRequest;
+import rp1.rossum.request.RsPlacementRequestHandler;
+import rp1.rossum.request.RsPlanRequest;
+import rp1.rossum.request.RsPlanRequestHandler;
+import rp1.rossum.request.RsPositionRequestHandler;
+import rp1.rossum.request.RsSensorRequest;
+import rp1.rossum.request.RsSensorRequestHandler;
+import rp1.rossum.request.RsSubscriptionRequest;
+import rp1.rossum.request.RsSubscriptionRequestHandler;
+import rp1.rossum.request.RsTargetSelectionRequest;
+import rp1.rossum.request.RsTargetSelectionRequestHandler;
+import rp1.rossum.request.RsTimeoutRequestHandler;
+
+/**
+ * The server's end of one client session. Its {@link #run()} loop reads the client's body
+ * specification, requests and interlock acknowledgements and hands them to the handlers the
+ * simulator registered; the {@code send...Event} methods write events to the client.
+ *
+ * <p>It also keeps the client's subscription table: which simulation-generated events (mouse clicks,
+ * motion started/halted, per-sensor state changes) the client wants. The {@code send...Event} methods
+ * do not consult it; the simulator does, before sending.
+ */
+public class RsConnection extends RsProtocol implements Runnable {
+    /**
+     * Subscriptions as (event code, index) keys. RP1 0.60 kept a fixed table of indices 0..1000, so
+     * sensors whose part id exceeded 1000 could never subscribe; part ids come from one process-wide
+     * counter, and with many robots in one process they pass 1000 quickly, so any index is accepted.
+     */
+    private final Set<Long> subscriptions = new HashSet<>();
+    /** Keeps interlock numbers in increasing order on this connection's stream. */
+    private final Object eventLock = new Object();
+    private RsInterlock interlock;
+    private volatile int maxInterlockSent;
+
+    private volatile RsTimeoutRequestHandler timeoutHandler;
+    private volatile RsSubscriptionRequestHandler subscriptionHandler;
+    private volatile RsMotionRequestHandler motionHandler;
+    private volatile RsPositionRequestHandler positionHandler;
+    private volatile RsPlacementRequestHandler placementHandler;
+    private volatile RsHaltRequestHandler haltHandler;
+    private volatile RsSensorRequestHandler sensorHandler;
+    private volatile RsTargetSelectionRequestHandler targetSelectionHandler;
+    private volatile RsPainterChangeRequestHandler painterChangeHandler;
+    private volatile RsActuatorControlRequestHandler actuatorControlHandler;
+    private volatile RsEncoderStatusRequestHandler encoderStatusHandler;
+    private volatile RsConnectionBodyHandler bodyHandler;
+    private volatile RsPlanRequestHandler planHandler;
+    private volatile RsHeartbeatRequestHandler heartbeatHandler;
+
+    public RsConnection() {
+    }
+
+    /** Every event sent from now on opens this interlock; acknowledgements close it. */
+    public void addInterlock(RsInterlock interlock) {
+        this.interlock = interlock;
+    }
+
+    /** The largest interlock number sent to this client (0 if none); released if the client leaves. */
+    public int getMaxInterlockSent() {
+        return maxInterlockSent;
+    }
+
+    /**
+     * The server's half of the handshake: reads CONNECT, adopting the client id and key it carries
+     * (the server assigns none), and answers ACCEPT echoing them.
+     */
+    public void exchangeIntroductions() throws IOException {
+        WireIn in = wire();
+        int version = in.firstI32("CONNECT version");
+        if (version != VERSION) {
+            throw new RsProtocolException("CONNECT version", "expected " + VERSION + ", got " + version);
+        }
+        int id = in.i32("CONNECT client id");
+        int key = in.i32("CONNECT client key");
+        serverSequence = in.i32("CONNECT sequence");
+        int code = in.i32("CONNECT transaction code");
+        if (code != CONNECT) {
+            throw new RsProtocolException("CONNECT transaction code", "expected CONNECT (1), got " + describeTransaction(code));
+        }
+        clientID = id;
+        clientKey = key;
+        send(ACCEPT, null);
+    }
+
+    /**
+     * Reads the client's messages until it disconnects or breaks the protocol, then shuts the
+     * session down, which calls the shutdown handler (the simulator removes the robot).
+     */
+    @Override
+    public void run() {
+        RequestSink sink = new Dispatcher();
+        try {
+            while (true) {
+                readTransaction(sink);
+            }
+        } catch (EOFException e) {
+            log("RsConnection: client " + clientID + " closed the connection");
+        } catch (IOException e) {
+            log("RsConnection terminating due to exception on input: " + e.getMessage());
+        }
+        shutdown();
+    }
+
+    private void readTransaction(RequestSink sink) throws IOException {
+        int code = readHeader();
+        switch (code) {
+            case REQUEST:
+                RequestCodec.decode(wire(), sink);
+                break;
+            case BODY_SPECIFICATION: {
+                RsBody body = BodyCodec.decode(wire());
+                verbose("Received body specification with name " + body.getName());
+                RsConnectionBodyHandler h = bodyHandler;
+                if (h != null) {
+                    h.process(body);
+                }
+                break;
+            }
+            case INTERLOCK: {
+                int value = wire().i32("interlock value");
+                RsInterlock il = interlock;
+                if (il != null) {
+                    il.closeInterlock(value);
+                }
+                break;
+            }
+            default:
+                throw new RsProtocolException("header transaction code",
+                        "a server does not accept " + describeTransaction(code) + " after the handshake");
+        }
+    }
+
+    /** Writes an event header and the event prefix (code, index, time, interlock), unflushed. */
+    protected void writeEventHeader(RsEvent event) throws IOException {
+        writeEventHeader(event.eventID, event.getIndex(), event.simTime);
+    }
+
+    /** Writes an event header and prefix for the given code, index and time, unflushed. */
+    protected void writeEventHeader(int eventID, int eventIndex, double simTime) throws IOException {
+        writeHeader(EVENT);
+        WireOut prefix = new WireOut().i32(eventID).i32(eventIndex).f64(simTime).i32(openInterlock());
+        writeRaw(prefix);
+    }
+
+    private void writeRaw(WireOut bytes) throws IOException {
+        if (output == null) {
+            throw new IOException("connection is closed");
+        }
+        bytes.writeTo(output);
+    }
+
+    private int openInterlock() {
+        RsInterlock il = interlock;
+        if (il == null) {
+            return 0;
+        }
+        int value = il.openInterlock();
+        if (value > maxInterlockSent) {
+            maxInterlockSent = value;
+        }
+        return value;
+    }
+
+    /**
+     * Sends any event. A write failure is logged and ends the session (the reader then stops too);
+     * after that, sends do nothing.
+     */
+    public void sendEvent(RsEvent event) {
+        if (isClosed() || !isOutputSet()) {
+            return;
+        }
+        try {
+            synchronized (eventLock) {
+                WireOut payload = new WireOut();
+                EventCodec.encode(payload, event, openInterlock());
+                send(EVENT, payload);
+            }
+        } catch (IOException e) {
+            log("RsConnection: cannot send " + event + " to client " + clientID + ": " + e.getMessage());
+            shutdown();
+        }
+    }
+
+    public void sendTimeoutEvent(RsTimeoutEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendMouseClickEvent(RsMouseClickEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendPositionEvent(RsPositionEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendPlacementEvent(RsPlacementEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendMotionHaltedEvent(RsMotionHaltedEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendMotionStartedEvent(RsMotionStartedEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendTargetSensorEvent(RsTargetSensorEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendContactSensorEvent(RsContactSensorEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendContactSensorEvent(double simTime, int sensorID, boolean status, String contactObjectName) {
+        sendEvent(new RsContactSensorEvent(simTime, sensorID, status, contactObjectName));
+    }
+
+    public void sendRangeSensorEvent(RsRangeSensorEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendTargetSelectionEvent(RsTargetSelectionEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendPlanEvent(RsPlanEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendPaintSensorEvent(RsPaintSensorEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendHeartbeatEvent(RsHeartbeatEvent e) {
+        sendEvent(e);
+    }
+
+    public void sendHeartbeatEvent(double simTime, int sequence) {
+        sendEvent(new RsHeartbeatEvent(simTime, sequence));
+    }
+
+    public void sendEncoderStatusEvent(RsEncoderStatusEvent e) {
+        sendEvent(e);
+    }
+
+    public synchronized void setTimeoutRequestHandler(RsTimeoutRequestHandler h) {
+        timeoutHandler = h;
+    }
+
+    public synchronized void setSubscriptionRequestHandler(RsSubscriptionRequestHandler h) {
+        subscriptionHandler = h;
+    }
+
+    public synchronized void setMotionRequestHandler(RsMotionRequestHandler h) {
+        motionHandler = h;
+    }
+
+    public synchronized void setPositionRequestHandler(RsPositionRequestHandler h) {
+        positionHandler = h;
+    }
+
+    public synchronized void setPlacementRequestHandler(RsPlacementRequestHandler h) {
+        placementHandler = h;
+    }
+
+    public synchronized void setHaltRequestHandler(RsHaltRequestHandler h) {
+        haltHandler = h;
+    }
+
+    public synchronized void setSensorRequestHandler(RsSensorRequestHandler h) {
+        sensorHandler = h;
+    }
+
+    public synchronized void setTargetSelectionRequestHandler(RsTargetSelectionRequestHandler h) {
+        targetSelectionHandler = h;
+    }
+
+    public synchronized void setPainterChangeRequestHandler(RsPainterChangeRequestHandler h) {
+        painterChangeHandler = h;
+    }
+
+    public synchronized void setActuatorControlRequestHandler(RsActuatorControlRequestHandler h) {
+        actuatorControlHandler = h;
+    }
+
+    public synchronized void setEncoderStatusRequestHandler(RsEncoderStatusRequestHandler h) {
+        encoderStatusHandler = h;
+    }
+
+    public synchronized void setBodyHandler(RsConnectionBodyHandler h) {
+        bodyHandler = h;
+    }
+
+    public synchronized void setPlanRequestHandler(RsPlanRequestHandler h) {
+        planHandler = h;
+    }
+
+    public synchronized void setHeartbeatRequestHandler(RsHeartbeatRequestHandler h) {
+        heartbeatHandler = h;
+    }
+
+    /** Records a subscription; event codes outside 0..13 and negative indices are ignored. */
+    public void setSubscriptionTableEntry(int row, int column, boolean value) {
+        if (row < 0 || row > RsEvent.EVT_MAX_CODE || column < 0) {
+            return;
+        }
+        synchronized (subscriptions) {
+            if (value) {
+                subscriptions.add(key(row, column));
+            } else {
+                subscriptions.remove(key(row, column));
+            }
+        }
+    }
+
+    /** Whether the client subscribed to event code {@code row} for index {@code column}. */
+    public boolean isClientSubscribedToEvent(int row, int column) {
+        synchronized (subscriptions) {
+            return subscriptions.contains(key(row, column));
+        }
+    }
+
+    private static long key(int row, int column) {
+        return ((long) row << 32) | (column & 0xFFFFFFFFL);
+    }
+
+    /** Hands decoded requests to the registered handlers; requests without a handler are dropped. */
+    private final class Dispatcher implements RequestSink {
+        @Override
+        public void timeout(double duration, int timeoutIndex) {
+            RsTimeoutRequestHandler h = timeoutHandler;
+            if (h != null) {
+                h.process(duration, timeoutIndex);
+            }
+        }
+
+        /** Timeout, position and placement events are always delivered, so their subscriptions are ignored. */
+        @Override
+        public void subscription(RsSubscriptionRequest r) {
+            int code = r.eventCode;
+            if (code != RsEvent.EVT_TIMEOUT && code != RsEvent.EVT_POSITION && code != RsEvent.EVT_PLACEMENT) {
+                setSubscriptionTableEntry(code, r.eventIndex, r.eventEnable);
+            }
+            RsSubscriptionRequestHandler h = subscriptionHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void sensorStatus(RsSensorRequest r) {
+            RsSensorRequestHandler h = sensorHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void motion(RsMotionRequest r) {
+            RsMotionRequestHandler h = motionHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void halt(RsHaltRequest r) {
+            RsHaltRequestHandler h = haltHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void position() {
+            RsPositionRequestHandler h = positionHandler;
+            if (h != null) {
+                h.process();
+            }
+        }
+
+        @Override
+        public void setPosition() {
+            verbose("RsConnection: ignoring reserved SetPosition request");
+        }
+
+        @Override
+        public void placement(RsPlacementRequest r) {
+            RsPlacementRequestHandler h = placementHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void targetSelection(RsTargetSelectionRequest r) {
+            RsTargetSelectionRequestHandler h = targetSelectionHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void plan(RsPlanRequest r) {
+            RsPlanRequestHandler h = planHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void heartbeat(RsHeartbeatRequest r) {
+            RsHeartbeatRequestHandler h = heartbeatHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void painterChange(RsPainterChangeRequest r) {
+            RsPainterChangeRequestHandler h = painterChangeHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void actuatorControl(RsActuatorControlRequest r) {
+            RsActuatorControlRequestHandler h = actuatorControlHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+
+        @Override
+        public void encoderStatus(RsEncoderStatusRequest r) {
+            RsEncoderStatusRequestHandler h = encoderStatusHandler;
+            if (h != null) {
+                h.process(r);
+            }
+        }
+    }
+}

@@ -1,0 +1,10 @@
+package rp1.rossum;
+
+/** Server side: receives the robot body a client specified. */
+public abstract class RsConnectionBodyHandler {
+    public RsConnectionBodyHandler() {
+    }
+
+    /** Called on the connection's reader thread when a body specification arrives. */
+    public abstract void process(RsBody body);
+}

@@ -1,0 +1,166 @@
+package rp1.rossum;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * Garbage, truncated and hostile input: the reader stops with one clear message naming the field and
+ * the value it saw, calls the shutdown handler, and returns. Nothing hangs or spins.
+ */
+@Timeout(30)
+class BadInputTest {
+    private static final String HEADER_EVENT = "00000000 00000000 00000000 00000001 00000003";
+
+    /** Runs a client over {@code bytes}; returns its log lines after {@code run()} returned. */
+    private static List<String> runClientOn(byte[] bytes) {
+        RsClient client = new RsClient();
+        List<String> log = new ArrayList<>();
+        client.setLogger(new ListLogger(log));
+        boolean[] shutdown = {false};
+        client.setProtocolShutdownHandler(() -> shutdown[0] = true);
+        client.setInputOutputStreams(new ByteArrayInputStream(bytes), new ByteArrayOutputStream());
+        client.run();
+        assertTrue(shutdown[0], "shutdown handler called");
+        return log;
+    }
+
+    private static void assertLogged(List<String> log, String fragment) {
+        assertTrue(log.stream().anyMatch(l -> l.contains(fragment)), "expected a log line containing '" + fragment + "', got " + log);
+    }
+
+    @Test
+    void wrongVersionIsNamed() {
+        assertLogged(runClientOn(Hex.bytes("00000001 00000000 00000000 00000001 00000003")),
+                "header version: expected 0, got 1");
+    }
+
+    @Test
+    void clientIdOrKeyMismatchIsNamed() {
+        assertLogged(runClientOn(Hex.bytes("00000000 00000009 00000000 00000001 00000003")),
+                "header client id: expected 0, got 9");
+        assertLogged(runClientOn(Hex.bytes("00000000 00000000 ffffffff 00000001 00000003")),
+                "header client key: expected 0, got -1");
+    }
+
+    @Test
+    void unknownTransactionCodeIsNamed() {
+        assertLogged(runClientOn(Hex.bytes("00000000 00000000 00000000 00000001 00000007")),
+                "header transaction code: unknown code 7");
+    }
+
+    @Test
+    void anInterlockTransactionSentToAClientIsAnOrderlyProtocolError() {
+        assertLogged(runClientOn(Hex.bytes("00000000 00000000 00000000 00000001 00000006 00000001")),
+                "a client accepts only EVENT (3), got INTERLOCK (6)");
+    }
+
+    @Test
+    void unknownEventCodeIsNamed() {
+        assertLogged(runClientOn(Hex.bytes(HEADER_EVENT + " 00000063 00000000 0000000000000000 00000000")),
+                "event code: unknown code 99");
+    }
+
+    @Test
+    void aStreamEndingMidEventNamesTheField() {
+        assertLogged(runClientOn(Hex.bytes(HEADER_EVENT + " 00000002 00000000 0000000000000000 00000000 3ff00000")),
+                "position x: stream ended in the middle of a message");
+    }
+
+    @Test
+    void invalidTextNamesTheField() {
+        assertLogged(runClientOn(Hex.bytes(HEADER_EVENT + " 00000009 00000000 0000000000000000 00000000 01 0002 ff41")),
+                "target selection name: invalid modified UTF-8");
+    }
+
+    @Test
+    void aCleanCloseBetweenMessagesIsNotReportedAsAProtocolError() {
+        List<String> log = runClientOn(Hex.bytes(HEADER_EVENT + " 0000000c 00000000 3ff0000000000000 00000000 00000001"));
+        assertLogged(log, "the server closed the connection");
+    }
+
+    @Test
+    void randomGarbageAlwaysEndsTheLoopCleanly() {
+        Random random = new Random(20261121L);
+        for (int i = 0; i < 500; i++) {
+            byte[] garbage = new byte[random.nextInt(200)];
+            random.nextBytes(garbage);
+            if (garbage.length > 20 && random.nextBoolean()) {
+                System.arraycopy(Hex.bytes(HEADER_EVENT), 0, garbage, 0, 20);
+            }
+            runClientOn(garbage);
+        }
+    }
+
+    @Test
+    void aServerConnectionRejectsClientOnlyTransactions() throws Exception {
+        RsConnection c = new RsConnection();
+        List<String> log = new ArrayList<>();
+        c.setLogger(new ListLogger(log));
+        c.setInputOutputStreams(new ByteArrayInputStream(Hex.bytes(HEADER_EVENT)), new ByteArrayOutputStream());
+        c.run();
+        assertLogged(log, "a server does not accept EVENT (3) after the handshake");
+    }
+
+    @Test
+    void aHugeActuatorParameterCountIsRefusedBeforeAllocating() throws Exception {
+        RsConnection c = new RsConnection();
+        List<String> log = new ArrayList<>();
+        c.setLogger(new ListLogger(log));
+        byte[] request = Hex.bytes("00000000 00000000 00000000 00000001 00000004 0000000c 00000000 00000005 00000003 7fffffff");
+        c.setInputOutputStreams(new ByteArrayInputStream(request), new ByteArrayOutputStream());
+        c.run();
+        assertLogged(log, "actuator parameter count: 2147483647 is outside the accepted range");
+    }
+
+    @Test
+    void anUnknownRequestCodeIsNamed() throws Exception {
+        RsConnection c = new RsConnection();
+        List<String> log = new ArrayList<>();
+        c.setLogger(new ListLogger(log));
+        byte[] request = Hex.bytes("00000000 00000000 00000000 00000001 00000004 0000000e 00000000");
+        c.setInputOutputStreams(new ByteArrayInputStream(request), new ByteArrayOutputStream());
+        c.run();
+        assertLogged(log, "request code: unknown code 14");
+    }
+
+    /** A logger that keeps its lines in a list. */
+    static final class ListLogger implements RsLogInterface {
+        private final List<String> lines;
+
+        ListLogger(List<String> lines) {
+            this.lines = lines;
+        }
+
+        @Override
+        public synchronized void logIt(String level, String message) {
+            lines.add(level + " " + message);
+        }
+
+        @Override
+        public void log(String message) {
+            logIt("s", message);
+        }
+
+        @Override
+        public void verbose(String message) {
+            logIt("v", message);
+        }
+
+        @Override
+        public boolean getVerbosity() {
+            return true;
+        }
+
+        @Override
+        public void setVerbosity(boolean value) {
+        }
+    }
+}
