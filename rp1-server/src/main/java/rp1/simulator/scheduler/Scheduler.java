@@ -1,0 +1,246 @@
+package rp1.simulator.scheduler;
+
+import java.util.HashMap;
+import java.util.Map;
+import java.util.TreeSet;
+
+/**
+ * The simulation's task queue and dispatch loop (behavior.md sections 4.1 and 4.2). Tasks run one at
+ * a time, in order of time, then priority (higher first: ordinary tasks 1, heartbeats 0, so at equal
+ * times heartbeats come last), then insertion sequence. Immediate tasks have time 0 and so precede
+ * every timed task. A task object is in the queue at most once.
+ *
+ * <p>Threads: request readers queue tasks and read the current time {@link #now()}; the interlock
+ * stops and starts the clock; one thread runs {@link #runLoop()} (or a test calls {@link #runNext()}).
+ * All state is guarded by this object's monitor; tasks run outside it.
+ */
+public final class Scheduler {
+    /** Priority of ordinary tasks. */
+    public static final int NORMAL = 1;
+    /** Priority of heartbeats: last among tasks due at the same time. */
+    public static final int HEARTBEAT = 0;
+    /** The original re-checks its queue at least this often while idle. */
+    private static final long IDLE_RECHECK_MILLIS = 5000;
+
+    private final SimClock clock;
+    private final TreeSet<Entry> queue = new TreeSet<>();
+    private final Map<Task, Entry> queued = new HashMap<>();
+    private long sequence;
+    private boolean stopped;
+    private Thread loopThread;
+
+    public Scheduler(SimClock clock) {
+        this.clock = clock;
+    }
+
+    public SimClock getClock() {
+        return clock;
+    }
+
+    /**
+     * Queues {@code task} at {@code time}. If the same task object is already queued nothing changes
+     * (the recycled motion task relies on this).
+     *
+     * @return false if the task was already queued
+     */
+    public synchronized boolean schedule(double time, int priority, Task task) {
+        if (queued.containsKey(task)) {
+            return false;
+        }
+        Entry e = new Entry(time, priority, sequence++, task);
+        queue.add(e);
+        queued.put(task, e);
+        notifyAll();
+        return true;
+    }
+
+    /** Queues {@code task} to run before every timed task, at the then-current time. */
+    public boolean scheduleImmediate(Task task) {
+        return schedule(0.0, NORMAL, task);
+    }
+
+    /** Removes {@code task} from the queue; returns whether it was queued. */
+    public synchronized boolean cancel(Task task) {
+        Entry e = queued.remove(task);
+        if (e == null) {
+            return false;
+        }
+        queue.remove(e);
+        notifyAll();
+        return true;
+    }
+
+    /** Whether {@code task} is waiting in the queue. */
+    public synchronized boolean isScheduled(Task task) {
+        return queued.containsKey(task);
+    }
+
+    /** The number of queued tasks. */
+    public synchronized int size() {
+        return queue.size();
+    }
+
+    /**
+     * The current simulation time, brought up to date with the wall clock ("U" in the spec): what
+     * request handlers stamp their tasks with.
+     */
+    public synchronized double now() {
+        return clock.update(horizon());
+    }
+
+    /** Time of the first queued timed task, or infinity. */
+    private double horizon() {
+        for (Entry e : queue) {
+            if (e.time > 0.0) {
+                return e.time;
+            }
+        }
+        return Double.POSITIVE_INFINITY;
+    }
+
+    /** Starts the clock (at simulation start, and when the interlock is released). */
+    public synchronized void startClock() {
+        clock.start();
+        notifyAll();
+    }
+
+    /** Freezes the clock (the interlock is open); no task runs until it is started again. */
+    public synchronized void stopClock() {
+        clock.stop(horizon());
+    }
+
+    public synchronized boolean isClockRunning() {
+        return clock.isRunning();
+    }
+
+    /**
+     * Runs the next task if one may run now, without waiting: the clock must be running and, for a
+     * paced clock, the task due. Lockstep simulations and tests drive the scheduler with this.
+     *
+     * @return whether a task ran
+     */
+    public boolean runNext() {
+        Entry e;
+        synchronized (this) {
+            e = takeDue();
+        }
+        if (e == null) {
+            return false;
+        }
+        e.task.run(e.runTime);
+        return true;
+    }
+
+    /** Runs tasks until none may run now; returns how many ran. */
+    public int runUntilIdle() {
+        int n = 0;
+        while (runNext()) {
+            n++;
+        }
+        return n;
+    }
+
+    /**
+     * The head task if it may run now (removed from the queue), else null. Holds the monitor. A timed
+     * task runs at its own time (the clock jumps there in lockstep; a paced clock has just reached it);
+     * an immediate task runs at the current time. A task queued in the past (a negative timeout) runs
+     * at once, stamped with its own time, and does not pull the clock back.
+     */
+    private Entry takeDue() {
+        if (stopped || !clock.isRunning() || queue.isEmpty()) {
+            return null;
+        }
+        Entry head = queue.first();
+        double now = clock.update(horizon());
+        if (head.time > now) {
+            if (!clock.isLockstep()) {
+                return null;
+            }
+            clock.setSimTime(head.time);
+            now = head.time;
+        }
+        queue.pollFirst();
+        queued.remove(head.task);
+        head.runTime = head.time > 0.0 ? head.time : now;
+        return head;
+    }
+
+    /**
+     * The dispatch loop: waits while the clock is stopped or nothing is due, sleeping in wall time
+     * until the next task is due on a paced clock, and runs tasks in order. Returns after
+     * {@link #shutdown()}.
+     */
+    public void runLoop() {
+        synchronized (this) {
+            loopThread = Thread.currentThread();
+        }
+        try {
+            while (true) {
+                Entry e = awaitNext();
+                if (e == null) {
+                    return;
+                }
+                e.task.run(e.runTime);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private synchronized Entry awaitNext() throws InterruptedException {
+        while (!stopped) {
+            Entry e = takeDue();
+            if (e != null) {
+                return e;
+            }
+            wait(waitMillis());
+        }
+        return null;
+    }
+
+    /** How long to wait before looking again: until the head is due on a running paced clock. */
+    private long waitMillis() {
+        if (!clock.isRunning() || queue.isEmpty() || clock.isLockstep()) {
+            return IDLE_RECHECK_MILLIS;
+        }
+        Entry head = queue.first();
+        return Math.max(1L, Math.min(IDLE_RECHECK_MILLIS, clock.millisUntil(head.time)));
+    }
+
+    /** Makes {@link #runLoop()} return and {@link #runNext()} refuse to run anything. */
+    public synchronized void shutdown() {
+        stopped = true;
+        notifyAll();
+    }
+
+    /** Whether the calling thread is the one running the dispatch loop. */
+    public synchronized boolean isSchedulerThread() {
+        return Thread.currentThread() == loopThread;
+    }
+
+    /** A queued task: ordered by time, then higher priority first, then insertion order. */
+    private static final class Entry implements Comparable<Entry> {
+        final double time;
+        final int priority;
+        final long sequence;
+        final Task task;
+        double runTime;
+
+        Entry(double time, int priority, long sequence, Task task) {
+            this.time = time;
+            this.priority = priority;
+            this.sequence = sequence;
+            this.task = task;
+        }
+
+        @Override
+        public int compareTo(Entry o) {
+            int c = Double.compare(time, o.time);
+            if (c != 0) {
+                return c;
+            }
+            c = Integer.compare(o.priority, priority);
+            return c != 0 ? c : Long.compare(sequence, o.sequence);
+        }
+    }
+}
