@@ -1,0 +1,101 @@
+package rp1.simulator.config;
+
+import java.util.Locale;
+import java.util.Properties;
+
+import rp1.rossum.RsProperties;
+
+/**
+ * Typed, validated access to a properties table read from one source (a file or class-path
+ * resource). Only the first white-space-delimited word of a value counts, as in RP1 0.60, so trailing
+ * comments are harmless. Errors name the key, the value and the source.
+ */
+final class PropertyReader {
+    private final Properties table;
+    private final String source;
+
+    PropertyReader(Properties table, String source) {
+        this.table = table;
+        this.source = source;
+    }
+
+    String source() {
+        return source;
+    }
+
+    /** The value of the first of {@code keys} that is present (later names are accepted aliases), or null. */
+    String string(String... keys) {
+        for (String key : keys) {
+            String v = RsProperties.firstWord(table.getProperty(key));
+            if (v != null) {
+                return v;
+            }
+        }
+        return null;
+    }
+
+    boolean bool(boolean fallback, String... keys) throws ConfigException {
+        String v = string(keys);
+        if (v == null) {
+            return fallback;
+        }
+        String lower = v.toLowerCase(Locale.ROOT);
+        if (lower.equals("true")) {
+            return true;
+        }
+        if (lower.equals("false")) {
+            return false;
+        }
+        throw error(keys[0], v, "true or false expected");
+    }
+
+    int integer(String key, int fallback, int min, int max) throws ConfigException {
+        String v = string(key);
+        if (v == null) {
+            return fallback;
+        }
+        int n;
+        try {
+            n = Integer.parseInt(v);
+        } catch (NumberFormatException e) {
+            throw error(key, v, "an integer expected");
+        }
+        if (n < min || n > max) {
+            throw error(key, v, "must be in [" + min + ", " + max + "]");
+        }
+        return n;
+    }
+
+    double real(String key, double fallback, double min, double max) throws ConfigException {
+        String v = string(key);
+        if (v == null) {
+            return fallback;
+        }
+        double d;
+        try {
+            d = Double.parseDouble(v);
+        } catch (NumberFormatException e) {
+            throw error(key, v, "a number expected");
+        }
+        if (!(d >= min && d <= max)) {
+            throw error(key, v, "must be in [" + min + ", " + max + "]");
+        }
+        return d;
+    }
+
+    long longValue(String key, long fallback) throws ConfigException {
+        String v = string(key);
+        if (v == null) {
+            return fallback;
+        }
+        try {
+            return Long.parseLong(v);
+        } catch (NumberFormatException e) {
+            throw error(key, v, "an integer expected");
+        }
+    }
+
+    ConfigException error(String key, String value, String problem) {
+        return new ConfigException(source + ": " + key + "=" + value + ": " + problem);
+    }
+}

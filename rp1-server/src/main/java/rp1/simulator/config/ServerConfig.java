@@ -1,0 +1,142 @@
+package rp1.simulator.config;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.List;
+import java.util.OptionalLong;
+import java.util.Properties;
+
+/**
+ * The server's settings, read from an RP1.ini-style properties file (behavior.md section 2.2, with
+ * the user's guide's spellings {@code enableInterlock} and {@code dlcSetLogger} accepted as aliases)
+ * plus the keys this implementation adds: {@code bindAddress}, {@code simulationSpeed=max},
+ * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
+ * {@code clientQueueLimit}, {@code snapshotFileName} and {@code snapshotInterval}. Immutable; built
+ * by {@link #from}, which validates every value.
+ */
+public final class ServerConfig {
+    public static final int DEFAULT_PORT = 7758;
+    /** The original caps the animation rate at 32 frames per second. */
+    public static final double MAX_ANIMATION_RATE = 32.0;
+
+    public final int port;
+    public final String bindAddress;
+    public final String floorPlanFileName;
+    public final String logFileName;
+    public final boolean logToFile;
+    public final boolean logToSystemOut;
+    public final boolean logVerbose;
+    public final boolean enableGUI;
+    public final boolean enableNetworkClients;
+    /** Simulated seconds per wall second; infinite when {@link #lockstep}. */
+    public final double simulationSpeed;
+    /** {@code simulationSpeed=max}: time jumps from task to task, never reading the wall clock. */
+    public final boolean lockstep;
+    public final double animationFrameRate;
+    public final double modelingFrameRate;
+    /** Seconds between motion evaluations: max(1 / modelingFrameRate, 0.001). */
+    public final double modelingInterval;
+    /** Seconds of wall time between animation frames: max(1 / animationFrameRate, 1/30). */
+    public final double frameInterval;
+    public final boolean dlcEnabled;
+    /** Classes to load as in-process clients (the original loads at most one). */
+    public final List<String> dlcNames;
+    public final boolean dlcSetIO;
+    public final boolean dlcSetLog;
+    public final boolean interlockEnabled;
+    /** Seed of the simulation's random source, if the properties give one. */
+    public final OptionalLong randomSeed;
+    public final boolean exitWhenClientsDone;
+    /** Stop the server at this simulation time (infinite: never). */
+    public final double maxSimulationTime;
+    /** Seconds a new network connection may take to send CONNECT. */
+    public final double connectTimeout;
+    /** Events that may wait for a slow client before it is disconnected. */
+    public final int clientQueueLimit;
+    /** Where to write pictures of the world, or null. */
+    public final String snapshotFileName;
+    /** Simulated seconds between pictures (0: only at exit). */
+    public final double snapshotInterval;
+
+    private ServerConfig(PropertyReader r, String planOverride) throws ConfigException {
+        port = r.integer("port", DEFAULT_PORT, 1025, 32767);
+        bindAddress = orDefault(r.string("bindAddress"), "127.0.0.1");
+        floorPlanFileName = planOverride != null ? planOverride : r.string("floorPlanFileName");
+        logFileName = r.string("logFileName");
+        logToFile = r.bool(false, "logToFile");
+        logToSystemOut = r.bool(false, "logToSystemOut");
+        logVerbose = r.bool(false, "logVerbose");
+        enableGUI = r.bool(true, "enableGUI");
+        enableNetworkClients = r.bool(true, "enableNetworkClients");
+        lockstep = "max".equals(r.string("simulationSpeed"));
+        simulationSpeed = lockstep ? Double.POSITIVE_INFINITY : r.real("simulationSpeed", 1.0, 0.001, 1000.0);
+        animationFrameRate = Math.min(MAX_ANIMATION_RATE, r.real("animationFrameRate", 20.0, 1.0e-3, Double.MAX_VALUE));
+        modelingFrameRate = Math.max(animationFrameRate, r.real("modelingFrameRate", 20.0, 1.0e-3, Double.MAX_VALUE));
+        modelingInterval = Math.max(1.0 / modelingFrameRate, 0.001);
+        frameInterval = Math.max(1.0 / animationFrameRate, 1.0 / 30.0);
+        dlcEnabled = r.bool(false, "dlcEnabled");
+        dlcNames = splitNames(r.string("dlcName"));
+        dlcSetIO = r.bool(true, "dlcSetIO");
+        dlcSetLog = r.bool(true, "dlcSetLog", "dlcSetLogger");
+        interlockEnabled = r.bool(false, "interlockEnabled", "enableInterlock");
+        String seed = r.string("randomSeed");
+        randomSeed = seed == null ? OptionalLong.empty() : OptionalLong.of(r.longValue("randomSeed", 0L));
+        exitWhenClientsDone = r.bool(false, "exitWhenClientsDone");
+        maxSimulationTime = r.real("maxSimulationTime", Double.POSITIVE_INFINITY, 0.0, Double.POSITIVE_INFINITY);
+        connectTimeout = r.real("connectTimeout", 10.0, 0.001, 86400.0);
+        clientQueueLimit = r.integer("clientQueueLimit", 10000, 16, Integer.MAX_VALUE);
+        snapshotFileName = r.string("snapshotFileName");
+        snapshotInterval = r.real("snapshotInterval", 0.0, 0.0, Double.POSITIVE_INFINITY);
+        checkConsistency(r);
+    }
+
+    private void checkConsistency(PropertyReader r) throws ConfigException {
+        String where = r.source() + ": ";
+        if (logToFile && logFileName == null) {
+            throw new ConfigException(where + "logToFile=true, but logFileName is missing");
+        }
+        if (dlcEnabled && dlcNames.isEmpty()) {
+            throw new ConfigException(where + "dlcEnabled=true, but no class name is given in dlcName");
+        }
+        if (dlcEnabled && !dlcSetIO && !enableNetworkClients) {
+            throw new ConfigException(where + "dlcSetIO=false makes the loaded client connect over the network, "
+                    + "but enableNetworkClients=false");
+        }
+        if (floorPlanFileName == null) {
+            throw new ConfigException(where + "the floor plan is missing: give floorPlanFileName or -f PLAN");
+        }
+        if (lockstep && !interlockEnabled) {
+            throw new ConfigException(where + "simulationSpeed=max needs interlockEnabled=true "
+                    + "(without the interlock nothing would hold simulated time back for the clients)");
+        }
+    }
+
+    /**
+     * Validates and builds a configuration.
+     *
+     * @param table        the properties
+     * @param source       where they came from, for error messages
+     * @param planOverride a floor plan given on the command line ({@code -f}), or null
+     */
+    public static ServerConfig from(Properties table, String source, String planOverride) throws ConfigException {
+        return new ServerConfig(new PropertyReader(table, source), planOverride);
+    }
+
+    private static String orDefault(String v, String fallback) {
+        return v == null ? fallback : v;
+    }
+
+    private static List<String> splitNames(String v) {
+        if (v == null) {
+            return Collections.emptyList();
+        }
+        List<String> names = new ArrayList<>();
+        for (String s : Arrays.asList(v.split(","))) {
+            if (!s.trim().isEmpty()) {
+                names.add(s.trim());
+            }
+        }
+        return Collections.unmodifiableList(names);
+    }
+}

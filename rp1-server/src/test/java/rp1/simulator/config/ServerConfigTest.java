@@ -1,0 +1,123 @@
+package rp1.simulator.config;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.StringReader;
+import java.util.Arrays;
+import java.util.Properties;
+
+import org.junit.jupiter.api.Test;
+
+/** Server properties: the original's keys and defaults, the guide's aliases, our additions, clear errors. */
+class ServerConfigTest {
+
+    private static ServerConfig config(String text) throws ConfigException {
+        return config(text, null);
+    }
+
+    private static ServerConfig config(String text, String plan) throws ConfigException {
+        Properties p = new Properties();
+        try {
+            p.load(new StringReader(text));
+        } catch (IOException e) {
+            throw new AssertionError(e);
+        }
+        return ServerConfig.from(p, "test.ini", plan);
+    }
+
+    @Test
+    void defaultsAreTheOriginals() throws Exception {
+        ServerConfig c = config("floorPlanFileName=WhiteRoom.txt\n");
+        assertEquals(7758, c.port);
+        assertEquals("127.0.0.1", c.bindAddress, "not on the network unless asked");
+        assertTrue(c.enableGUI);
+        assertTrue(c.enableNetworkClients);
+        assertEquals(1.0, c.simulationSpeed);
+        assertFalse(c.lockstep);
+        assertEquals(0.05, c.modelingInterval, 1e-15);
+        assertEquals(0.05, c.frameInterval, 1e-15);
+        assertFalse(c.interlockEnabled);
+        assertFalse(c.dlcEnabled);
+        assertTrue(c.dlcSetIO);
+        assertTrue(c.dlcSetLog);
+        assertFalse(c.randomSeed.isPresent());
+    }
+
+    @Test
+    void theModellingRateIsRaisedToTheAnimationRateAndTheAnimationRateCappedAt32() throws Exception {
+        ServerConfig c = config("floorPlanFileName=x\nmodelingFrameRate=5\n");
+        assertEquals(20.0, c.modelingFrameRate, "raised to the animation rate even without a GUI");
+        ServerConfig fast = config("floorPlanFileName=x\nanimationFrameRate=100\nmodelingFrameRate=2000\n");
+        assertEquals(32.0, fast.animationFrameRate);
+        assertEquals(0.001, fast.modelingInterval, 1e-15, "never below a millisecond");
+    }
+
+    @Test
+    void theGuidesSpellingsAreAccepted() throws Exception {
+        ServerConfig c = config("floorPlanFileName=x\nenableInterlock=true\ndlcSetLogger=false\n");
+        assertTrue(c.interlockEnabled);
+        assertFalse(c.dlcSetLog);
+    }
+
+    @Test
+    void onlyTheFirstWordOfAValueCounts() throws Exception {
+        assertFalse(config("floorPlanFileName=x\nenableGUI=false   # headless\n").enableGUI);
+    }
+
+    @Test
+    void maxSpeedMeansLockstepAndNeedsTheInterlock() throws Exception {
+        ServerConfig c = config("floorPlanFileName=x\nsimulationSpeed=max\ninterlockEnabled=true\n");
+        assertTrue(c.lockstep);
+        ConfigException e = assertThrows(ConfigException.class, () -> config("floorPlanFileName=x\nsimulationSpeed=max\n"));
+        assertTrue(e.getMessage().contains("needs interlockEnabled=true"), e.getMessage());
+    }
+
+    @Test
+    void badValuesNameTheFileTheKeyAndTheValue() {
+        assertMessage("port=77x\n", "test.ini: port=77x: an integer expected");
+        assertMessage("port=80\n", "test.ini: port=80: must be in [1025, 32767]");
+        assertMessage("enableGUI=yes\n", "test.ini: enableGUI=yes: true or false expected");
+        assertMessage("simulationSpeed=2000\n", "test.ini: simulationSpeed=2000: must be in [0.001, 1000.0]");
+        assertMessage("simulationSpeed=fast\n", "test.ini: simulationSpeed=fast: a number expected");
+        assertMessage("randomSeed=abc\n", "test.ini: randomSeed=abc: an integer expected");
+    }
+
+    @Test
+    void inconsistentSettingsAreRefused() {
+        assertMessage("logToFile=true\n", "logToFile=true, but logFileName is missing");
+        assertMessage("dlcEnabled=true\n", "dlcEnabled=true, but no class name is given in dlcName");
+        assertMessage("dlcEnabled=true\ndlcName=a.B\ndlcSetIO=false\nenableNetworkClients=false\n",
+                "enableNetworkClients=false");
+    }
+
+    @Test
+    void theFloorPlanIsRequiredUnlessGivenOnTheCommandLine() throws Exception {
+        ConfigException e = assertThrows(ConfigException.class, () -> config("port=7758\n"));
+        assertTrue(e.getMessage().contains("the floor plan is missing"), e.getMessage());
+        assertEquals("contest.txt", config("floorPlanFileName=x\n", "contest.txt").floorPlanFileName);
+    }
+
+    @Test
+    void severalInProcessClientsMayBeNamed() throws Exception {
+        ServerConfig c = config("floorPlanFileName=x\ndlcEnabled=true\ndlcName=a.One,b.Two\n");
+        assertEquals(Arrays.asList("a.One", "b.Two"), c.dlcNames);
+    }
+
+    private static void assertMessage(String text, String expected) {
+        ConfigException e = assertThrows(ConfigException.class, () -> config("floorPlanFileName=x\n" + text));
+        assertTrue(e.getMessage().contains(expected), "expected '" + expected + "' in: " + e.getMessage());
+    }
+
+    @Test
+    void commandLineFlagsNeedValuesAndTheLastOneWins() throws Exception {
+        ServerArguments a = ServerArguments.parse(new String[] {"-p", "a.ini", "-f", "x.txt", "-p", "b.ini", "extra"});
+        assertEquals("b.ini", a.propertiesName);
+        assertEquals("x.txt", a.planName);
+        ConfigException e = assertThrows(ConfigException.class, () -> ServerArguments.parse(new String[] {"-f"}));
+        assertTrue(e.getMessage().startsWith("Missing specification for -f option"));
+    }
+}
