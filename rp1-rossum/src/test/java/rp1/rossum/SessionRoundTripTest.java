@@ -176,6 +176,30 @@ class SessionRoundTripTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"piped", "socket"})
+    void anAckermanCarWithACasterArrivesWithItsDerivedSteeringLimit(String transport) throws Exception {
+        RsBody car = new RsBody("car");
+        RsAckermanSteering steering = new RsAckermanSteering(0.3, 0.4, 0.06, Math.toRadians(40), false);
+        steering.addDefaultWheels(0.06, 0.03, 0.05, 0.01);
+        steering.addDefaultCasterWheel(-0.2, 0.0, 0.03, 0.02);
+        car.addPart(new RsBodyShape(new double[] {-0.25, -0.2, 0.55, -0.2, 0.55, 0.2, -0.25, 0.2}, 4));
+        car.addPart(steering);
+        try (Link link = RequestRoundTripTest.link(transport)) {
+            ServerRecorder server = new ServerRecorder(link.connection);
+            link.startServer();
+            link.client.sendBodySpecification(car);
+            RsBody got = (RsBody) server.received.next();
+            RsAckermanSteering s = (RsAckermanSteering) got.wheelSystem;
+            assertEquals(steering.getID(), s.getID());
+            assertEquals(steering.getWheels().length, s.getWheels().length);
+            assertTrue(s.getWheels()[s.getWheels().length - 1] instanceof RsWheelCaster);
+            assertEquals(0.4, s.getWheelBase());
+            assertTrue(s.getMaxAbsSteeringAngle() < steering.getMaxAbsSteeringAngle(),
+                    "the server re-derives the limit from the already derived value, as RP1 0.60 does");
+        }
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"piped", "socket"})
     void sensorPollingAndPainterRequestsArrive(String transport) throws Exception {
         Robot robot = new Robot();
         try (Link link = RequestRoundTripTest.link(transport)) {
