@@ -216,9 +216,17 @@ public class RsBody extends RsComponent {
      * @return whether any sensor's state changed (see {@link RsBodySensor#didStateChange()})
      */
     public boolean processSensors(double simTime, RsPlan plan, RsTransform pose) {
+        return processSensors(simTime, plan, plan == null ? null : plan.getWallArray(), pose);
+    }
+
+    /**
+     * As {@link #processSensors(double, RsPlan, RsTransform)}, with {@code walls} blocking range and
+     * target sensors instead of the plan's walls (the simulator adds the other robots).
+     */
+    public boolean processSensors(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
         boolean changed = false;
         for (RsBodySensor s : getBodySensorArray()) {
-            if (s.computeAndSetState(simTime, plan, pose)) {
+            if (s.computeAndSetState(simTime, plan, walls, pose)) {
                 changed = true;
             }
         }
@@ -244,6 +252,12 @@ public class RsBody extends RsComponent {
     public void computeMotion(double time, RsMotionRequest request, RsPlan plan) {
         computeMotion(time, request);
         searchForCollisions(plan);
+    }
+
+    /** As {@link #computeMotion(double, RsMotionRequest, RsPlan)}, colliding with {@code walls}. */
+    public void computeMotion(double time, RsMotionRequest request, RsWall[] walls) {
+        computeMotion(time, request);
+        searchForCollisions(walls);
     }
 
     /** Replaces the current motion as is (no collision search). */
@@ -293,13 +307,17 @@ public class RsBody extends RsComponent {
      * @return whether a collision was predicted
      */
     protected boolean searchForCollisions(RsPlan plan) {
-        if (motion == null || plan == null) {
+        return plan != null && searchForCollisions(plan.getWallArray());
+    }
+
+    private boolean searchForCollisions(RsWall[] walls) {
+        if (motion == null || walls == null) {
             return false;
         }
-        flagContactSensors(plan.getWallArray());
+        flagContactSensors(walls);
         boolean hit = false;
         for (RsBodyShape s : getInteractiveBodyShapeArray()) {
-            if (s.searchForCollisions(plan, motion)) {
+            if (s.searchForCollisions(walls, motion)) {
                 hit = true;
             }
         }
@@ -426,8 +444,13 @@ public class RsBody extends RsComponent {
      * interactive shapes never overlaps.
      */
     public boolean checkForOverlap(RsPlan plan, RsTransform pose) {
+        return plan != null && checkForOverlap(plan.getWallArray(), pose);
+    }
+
+    /** As {@link #checkForOverlap(RsPlan, RsTransform)}, against {@code walls}. */
+    public boolean checkForOverlap(RsWall[] walls, RsTransform pose) {
         for (RsBodyShape s : getInteractiveBodyShapeArray()) {
-            if (s.checkForOverlap(plan, pose)) {
+            if (s.checkForOverlap(walls, pose)) {
                 return true;
             }
         }

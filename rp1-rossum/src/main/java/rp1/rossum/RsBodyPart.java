@@ -142,13 +142,21 @@ public abstract class RsBodyPart extends RsComponent {
      * collide.
      */
     public boolean searchForCollisions(RsPlan plan, RsMotion motion) {
+        return plan != null && searchForCollisions(plan.getWallArray(), motion);
+    }
+
+    /**
+     * As {@link #searchForCollisions(RsPlan, RsMotion)}, against the given obstacles (the simulator
+     * adds other robots to the plan's walls).
+     */
+    public boolean searchForCollisions(RsWall[] walls, RsMotion motion) {
         RsSegment[] outline = collisionOutline();
-        if (outline == null || outline.length == 0 || plan == null || motion == null) {
+        if (outline == null || outline.length == 0 || walls == null || motion == null) {
             return false;
         }
         RsSegment[] body = BodyOutline.map(outline, motion.transform0);
         boolean hit = false;
-        for (RsWall wall : plan.getWallArray()) {
+        for (RsWall wall : walls) {
             RsSegment[] edges = wall.getSegmentArray();
             if (motion.processCollision(body, body.length, edges, edges.length)) {
                 hit = true;

@@ -97,6 +97,12 @@ public class RsBodyRangeSensor extends RsBodySensor {
      */
     @Override
     public boolean computeAndSetState(double simTime, RsPlan plan, RsTransform pose) {
+        return computeAndSetState(simTime, plan, plan == null ? null : plan.getWallArray(), pose);
+    }
+
+    /** The ray is cast against {@code walls}: the plan's walls and, in the simulator, other robots. */
+    @Override
+    public boolean computeAndSetState(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
         mappedPos = pose.map(xDetector, yDetector);
         double heading = pose.getTheta() + sightAngle;
         double dx = maxRange * Math.cos(heading);
@@ -105,9 +111,9 @@ public class RsBodyRangeSensor extends RsBodySensor {
         int previousBin = rBin;
         double nearest = 1.0;
         RsWall nearestWall = null;
-        if (plan != null) {
+        if (walls != null) {
             RsSegSect sect = new RsSegSect();
-            for (RsWall wall : plan.getWallArray()) {
+            for (RsWall wall : walls) {
                 for (RsSegment e : wall.getSegmentArray()) {
                     if (sect.process(mappedPos.x, mappedPos.y, dx, dy, e.x, e.y, e.v.x, e.v.y) && sect.t1 < nearest) {
                         nearest = sect.t1;

@@ -47,6 +47,15 @@ public abstract class RsBodySensor extends RsBodyShape {
      */
     public abstract boolean computeAndSetState(double simTime, RsPlan plan, RsTransform pose);
 
+    /**
+     * As {@link #computeAndSetState(double, RsPlan, RsTransform)}, with {@code walls} as what blocks the
+     * sensor instead of the plan's walls (the simulator adds other robots). Sensors that walls do not
+     * affect ignore it.
+     */
+    public boolean computeAndSetState(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
+        return computeAndSetState(simTime, plan, pose);
+    }
+
     /** The current state as an event stamped {@code simTime}; the base sensor has none (null). */
     public RsSensorEvent getSensorEvent(double simTime) {
         return null;

@@ -76,11 +76,16 @@ public class RsBodyShape extends RsBodyPart {
      * is inside or within 1e-4 m of this outline. A shape without an outline never overlaps.
      */
     public boolean checkForOverlap(RsPlan plan, RsTransform pose) {
-        if (outline.length == 0 || plan == null) {
+        return plan != null && checkForOverlap(plan.getWallArray(), pose);
+    }
+
+    /** As {@link #checkForOverlap(RsPlan, RsTransform)}, against the given obstacles. */
+    public boolean checkForOverlap(RsWall[] walls, RsTransform pose) {
+        if (outline.length == 0 || walls == null) {
             return false;
         }
         RsSegment[] body = BodyOutline.map(outline, pose);
-        for (RsWall wall : plan.getWallArray()) {
+        for (RsWall wall : walls) {
             if (wall.getPolygon() != null && overlaps(body, wall)) {
                 return true;
             }

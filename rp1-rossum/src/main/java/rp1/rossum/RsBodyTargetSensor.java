@@ -127,6 +127,12 @@ public class RsBodyTargetSensor extends RsBodySensor {
      */
     @Override
     public boolean computeAndSetState(double simTime, RsPlan plan, RsTransform pose) {
+        return computeAndSetState(simTime, plan, plan == null ? null : plan.getWallArray(), pose);
+    }
+
+    /** Targets of {@code plan} are sought; {@code walls} (the plan's walls, and in the simulator other robots) hide them. */
+    @Override
+    public boolean computeAndSetState(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
         mappedPos = pose.map(xDetector, yDetector);
         double axis = pose.getTheta() + 2.0 * sightAngle;
         vx = Math.cos(axis);
@@ -138,7 +144,7 @@ public class RsBodyTargetSensor extends RsBodySensor {
         int previousWBin = wBin;
         clearDetection();
         if (plan != null) {
-            search(plan);
+            search(plan, walls == null ? new RsWall[0] : walls);
         }
         boolean changed = hot
                 ? !wasHot || rBin != previousRBin || wBin != previousWBin || !sameTarget(previous, previousName)
@@ -163,8 +169,7 @@ public class RsBodyTargetSensor extends RsBodySensor {
         bearing = 0.0;
     }
 
-    private void search(RsPlan plan) {
-        RsWall[] walls = plan.getWallArray();
+    private void search(RsPlan plan, RsWall[] walls) {
         double best = Double.POSITIVE_INFINITY;
         for (RsTarget target : plan.getTargetArray()) {
             if (!target.getSelected() || !target.isGeometrySet) {

@@ -21,6 +21,7 @@ import rp1.rossum.request.RsTargetSelectionRequest;
 public class RsPlan {
     private final List<RsObject> objects = new ArrayList<>();
     private final Map<String, RsObject> byName = new HashMap<>();
+    private final Map<Class<?>, List<? extends RsObject>> byType = new HashMap<>();
     private String fileName;
     private String caption;
     private RsUnits units = new RsMeters();
@@ -90,7 +91,7 @@ public class RsPlan {
      *
      * @throws IllegalArgumentException if another object already has the object's name
      */
-    public void addObject(RsObject object) {
+    public synchronized void addObject(RsObject object) {
         if (object.getName() == null) {
             object.setName(synthesizeName());
         }
@@ -100,6 +101,7 @@ public class RsPlan {
         }
         object.plan = this;
         objects.add(object);
+        byType.clear();
         byName.put(object.getName(), object);
     }
 
@@ -144,14 +146,24 @@ public class RsPlan {
         return objectsOf(RsPaint.class).toArray(new RsPaint[0]);
     }
 
-    private <T extends RsObject> List<T> objectsOf(Class<T> type) {
-        List<T> list = new ArrayList<>();
-        for (RsObject o : objects) {
-            if (type.isInstance(o)) {
-                list.add(type.cast(o));
+    /**
+     * The objects of one type in declaration order. Sensors and collision searches ask for the walls
+     * at every motion step, so the lists are kept until an object is added.
+     */
+    @SuppressWarnings("unchecked")
+    private synchronized <T extends RsObject> List<T> objectsOf(Class<T> type) {
+        List<? extends RsObject> cached = byType.get(type);
+        if (cached == null) {
+            List<T> list = new ArrayList<>();
+            for (RsObject o : objects) {
+                if (type.isInstance(o)) {
+                    list.add(type.cast(o));
+                }
             }
+            cached = Collections.unmodifiableList(list);
+            byType.put(type, cached);
         }
-        return list;
+        return (List<T>) cached;
     }
 
     /**
