@@ -21,6 +21,7 @@ public final class RsPipe {
     private int count;
     private boolean writerClosed;
     private boolean readerClosed;
+    private boolean readerWaiting;
     private final InputStream input = new PipeInput();
     private final OutputStream output = new PipeOutput();
 
@@ -55,7 +56,12 @@ public final class RsPipe {
             if (writerClosed || readerClosed) {
                 return -1;
             }
-            awaitChange();
+            readerWaiting = true;
+            try {
+                awaitChange();
+            } finally {
+                readerWaiting = false;
+            }
         }
         int n = Math.min(len, count);
         int first = Math.min(n, buffer.length - head);
@@ -100,6 +106,15 @@ public final class RsPipe {
 
     private synchronized int available() {
         return count;
+    }
+
+    /**
+     * Whether everything written so far has been read and the reader is blocked waiting for more:
+     * a reader that decodes messages has then dealt with every message it was sent. The simulator
+     * uses this to start its clock only once in-process clients have finished their first requests.
+     */
+    public synchronized boolean isDrained() {
+        return count == 0 && readerWaiting;
     }
 
     private synchronized void closeWriter() {

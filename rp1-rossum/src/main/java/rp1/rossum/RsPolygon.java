@@ -112,10 +112,14 @@ public class RsPolygon implements Serializable {
             if (distanceSquaredToSegment(s, x, y) <= tol2) {
                 return ON_BOUNDARY;
             }
+            // The end point is taken from the next edge, not computed as start + v: a vertex must have
+            // exactly the same coordinates as the end of one edge and the start of the next, or a ray
+            // through it can be counted twice or not at all.
+            RsSegment next = edges[(i + 1) % n];
             double y0 = s.y;
-            double y1 = s.y + s.v.y;
+            double y1 = next.y;
             if ((y0 > y) != (y1 > y)) {
-                double xCross = s.x + (y - y0) / (y1 - y0) * s.v.x;
+                double xCross = s.x + (y - y0) / (y1 - y0) * (next.x - s.x);
                 if (x < xCross) {
                     inside = !inside;
                 }

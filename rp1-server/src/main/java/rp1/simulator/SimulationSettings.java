@@ -1,0 +1,54 @@
+package rp1.simulator;
+
+import rp1.simulator.scheduler.SimClock;
+import rp1.simulator.scheduler.TimeSource;
+
+/**
+ * What a simulation needs to know besides its floor plan: how often motion is evaluated, how its
+ * clock runs, whether events interlock with clients, and the seed of its one random source.
+ */
+public final class SimulationSettings {
+    /** Seconds between motion evaluations. */
+    public final double modelingInterval;
+    /** Simulated seconds per wall second; infinite for lockstep. */
+    public final double speed;
+    public final boolean interlock;
+    public final long randomSeed;
+    public final TimeSource wallClock;
+
+    public SimulationSettings(double modelingInterval, double speed, boolean interlock, long randomSeed,
+                              TimeSource wallClock) {
+        if (!(modelingInterval > 0.0)) {
+            throw new IllegalArgumentException("modelingInterval must be positive, got " + modelingInterval);
+        }
+        if (!(speed > 0.0)) {
+            throw new IllegalArgumentException("speed must be positive, got " + speed);
+        }
+        this.modelingInterval = modelingInterval;
+        this.speed = speed;
+        this.interlock = interlock;
+        this.randomSeed = randomSeed;
+        this.wallClock = wallClock;
+    }
+
+    /**
+     * Lockstep with the interlock: time jumps from task to task and waits only for clients, so the
+     * same plan, seed and client give the same events on every run, as fast as they can be computed.
+     */
+    public static SimulationSettings lockstep(double modelingInterval, long randomSeed) {
+        return new SimulationSettings(modelingInterval, Double.POSITIVE_INFINITY, true, randomSeed, null);
+    }
+
+    /** A clock paced by the system's wall clock at {@code speed}. */
+    public static SimulationSettings paced(double modelingInterval, double speed, boolean interlock, long randomSeed) {
+        return new SimulationSettings(modelingInterval, speed, interlock, randomSeed, TimeSource.SYSTEM);
+    }
+
+    public boolean isLockstep() {
+        return Double.isInfinite(speed);
+    }
+
+    SimClock newClock() {
+        return isLockstep() ? SimClock.lockstep() : SimClock.paced(wallClock, speed);
+    }
+}

@@ -1,0 +1,247 @@
+package rp1.simulator.world;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyPainter;
+import rp1.rossum.RsBodySensor;
+import rp1.rossum.RsMotion;
+import rp1.rossum.RsPlan;
+import rp1.rossum.RsTransform;
+import rp1.rossum.RsWall;
+import rp1.rossum.event.RsContactSensorEvent;
+import rp1.rossum.event.RsMotionHaltedEvent;
+import rp1.rossum.event.RsMotionStartedEvent;
+import rp1.rossum.event.RsPositionEvent;
+import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.request.RsPainterChangeRequest;
+
+/**
+ * One client's robot in the world: its body, whether it is placed, its motion, the motion request
+ * waiting to start, and its paint trails. The motion lifecycle of behavior.md section 5.4 lives here,
+ * split into the phases the {@link MotionStepper} runs for all robots at one time.
+ *
+ * <p>Everything here runs on the scheduler thread except {@link #isPlaced()} and
+ * {@link #markUnplaced()}, which a client's reader thread uses so that requests arriving after a
+ * placement request see the robot off the floor at once, as in RP1 0.60.
+ */
+public final class Robot {
+    private final int number;
+    private final EventSink events;
+    private final RsBody body;
+    private final RobotShapes shapes;
+    private final String label;
+    private final List<PaintTrail> trails;
+    private volatile boolean placed;
+    private RsMotionRequest pending;
+    private boolean moving;
+    private boolean placementEvaluation;
+
+    Robot(int number, RsBody body, EventSink events) {
+        this.number = number;
+        this.body = body;
+        this.events = events;
+        this.shapes = new RobotShapes(body);
+        String name = body.getName();
+        this.label = name == null || name.isEmpty() ? "robot " + number : name;
+        List<PaintTrail> t = new ArrayList<>();
+        for (RsBodyPainter p : body.getBodyPainterArray()) {
+            t.add(new PaintTrail(p));
+        }
+        trails = Collections.unmodifiableList(t);
+    }
+
+    /** The order in which the robot joined the world, from 1. */
+    public int getNumber() {
+        return number;
+    }
+
+    /** The body's name, or "robot N" if it has none; other robots' sensors report this name. */
+    public String getLabel() {
+        return label;
+    }
+
+    public RsBody getBody() {
+        return body;
+    }
+
+    public boolean isPlaced() {
+        return placed;
+    }
+
+    /** A placement request arrived: the robot is off the floor until the placement succeeds. */
+    public void markUnplaced() {
+        placed = false;
+    }
+
+    public boolean isMoving() {
+        return moving;
+    }
+
+    /** The paint trails, one per painter part. */
+    public List<PaintTrail> getTrails() {
+        return trails;
+    }
+
+    EventSink events() {
+        return events;
+    }
+
+    RobotShapes shapes() {
+        return shapes;
+    }
+
+    RsMotion motion() {
+        return body.getMotion();
+    }
+
+    /** The pose at the motion's current time (identity before the first placement). */
+    public RsTransform pose() {
+        RsMotion m = body.getMotion();
+        return m == null ? new RsTransform() : m.transform;
+    }
+
+    /** Whether the motion stepper has work for this robot: moving, a request to start, or just placed. */
+    boolean needsProcessing() {
+        return placed && (moving || pending != null || placementEvaluation);
+    }
+
+    /** A motion request takes effect at the robot's next evaluation, replacing any motion under way. */
+    void setPendingRequest(RsMotionRequest request) {
+        pending = request;
+    }
+
+    void clearPendingRequest() {
+        pending = null;
+    }
+
+    boolean hasPendingRequest() {
+        return pending != null;
+    }
+
+    /** Puts the robot at a pose with a fresh motion history; its sensors are evaluated next. */
+    void place(double time, double x, double y, double orientation) {
+        body.place(time, x, y, orientation);
+        moving = false;
+        pending = null;
+        placementEvaluation = true;
+        placed = true;
+    }
+
+    /** Step 1 of an evaluation: the motion, wheels, encoders and paint trails brought to {@code time}. */
+    void advance(double time) {
+        RsMotion m = body.getMotion();
+        if (m == null) {
+            return;
+        }
+        m.setTime(time);
+        body.applyMotion();
+        for (PaintTrail t : trails) {
+            t.record(m.transform, m.getContinuitySeriesID());
+        }
+    }
+
+    /**
+     * Step 2: the pending request becomes the motion, cut short before any wall it would hit; motion
+     * started (if it lasts), then contact-sensor releases.
+     */
+    void startPendingMotion(double time, RsWall[] walls) {
+        RsMotionRequest request = pending;
+        pending = null;
+        placementEvaluation = false;
+        body.computeMotion(time, request, walls);
+        RsMotion m = body.getMotion();
+        moving = true;
+        if (m.timeTotal > 0.0) {
+            RsTransform start = m.transform0;
+            events.sendIfSubscribed(new RsMotionStartedEvent(time, request.linearVelocity, request.rotationalVelocity,
+                    m.timeTotal, start.m13, start.m23, start.getTheta()));
+        }
+        for (RsContactSensorEvent e : body.releaseContactSensors(time)) {
+            events.sendIfSubscribed(e);
+        }
+    }
+
+    /** Step 3: target, range and paint sensors at {@code time}; one event per changed, subscribed sensor. */
+    void sense(double time, RsPlan plan, RsWall[] obstacles) {
+        body.processSensors(time, plan, obstacles, pose());
+        for (RsBodySensor s : body.getBodySensorArray()) {
+            if (s.didStateChange()) {
+                events.sendIfSubscribed(s.getSensorEvent(time));
+            }
+        }
+    }
+
+    /**
+     * Steps 4 and 5: when the motion goes on, the time of the next evaluation; when it has ended,
+     * contact-sensor hits and motion halted (not after a placement), and NaN.
+     */
+    double finish(double time, double interval) {
+        boolean wasPlacement = placementEvaluation;
+        placementEvaluation = false;
+        RsMotion m = body.getMotion();
+        if (moving && m.time < m.time1) {
+            return Math.min(m.time + interval, m.time1);
+        }
+        if (moving) {
+            moving = false;
+            for (RsContactSensorEvent e : body.pressContactSensors(time)) {
+                events.sendIfSubscribed(e);
+            }
+            if (!wasPlacement) {
+                RsTransform end = m.transform;
+                int cause = m.collision ? RsMotionHaltedEvent.HALTED_ON_COLLISION : RsMotionHaltedEvent.HALTED_ON_COMPLETION;
+                events.sendIfSubscribed(new RsMotionHaltedEvent(time, cause, end.m13, end.m23, end.getTheta(), m.timeTotal));
+            }
+        }
+        return Double.NaN;
+    }
+
+    /** A halt request: any waiting request is dropped and a motion under way stops at {@code time}. */
+    void halt(double time) {
+        pending = null;
+        if (!moving) {
+            return;
+        }
+        RsMotion m = body.getMotion();
+        m.stopMotionAtTime(time);
+        m.setTime(time);
+        moving = false;
+        RsTransform at = m.transform;
+        events.sendIfSubscribed(new RsMotionHaltedEvent(time, RsMotionHaltedEvent.HALTED_ON_REQUEST, at.m13, at.m23,
+                at.getTheta(), m.timeTotal));
+    }
+
+    /** The position report at {@code time} (the last pose if unplaced; zeros before any placement). */
+    RsPositionEvent positionEvent(double time) {
+        return body.getPositionEvent(time);
+    }
+
+    /** Applies a painter-change request to the painter with that id, if the body has one. */
+    void changePainter(RsPainterChangeRequest r) {
+        for (PaintTrail t : trails) {
+            if (t.getPainterID() == r.painterID) {
+                t.apply(r);
+            }
+        }
+    }
+
+    /** Clears every trail ("Remove Paint Trails"). */
+    void eraseTrails() {
+        for (PaintTrail t : trails) {
+            t.erase();
+        }
+    }
+
+    /** The robot's shapes at its current pose, as walls other robots collide with and sense. */
+    RsWall[] asObstacles() {
+        return shapes.asWalls(pose(), label);
+    }
+
+    @Override
+    public String toString() {
+        return "Robot[" + number + " " + label + (placed ? ", placed" : "") + (moving ? ", moving" : "") + "]";
+    }
+}

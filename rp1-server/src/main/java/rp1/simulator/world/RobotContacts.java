@@ -1,0 +1,159 @@
+package rp1.simulator.world;
+
+import java.util.List;
+
+import rp1.rossum.RsBodyContactSensor;
+import rp1.rossum.RsBodySensor;
+import rp1.rossum.RsMotion;
+import rp1.rossum.RsRectangle;
+import rp1.rossum.RsSegment;
+import rp1.rossum.RsTransform;
+
+/**
+ * Robots meeting robots (beyond RP1 0.60, where robots passed through each other). Walls are known in
+ * advance, so a motion is cut before the first wall analytically when it starts; other robots move,
+ * so at every motion step the coming interval is searched for the first time two robots touch. Both
+ * poses are analytic, so the search samples the interval finely enough that neither body can pass
+ * through the other between samples (robots are bodies of at least a few centimetres), then narrows
+ * the contact down by bisection. Each robot that was moving stops at the last whole millisecond
+ * before contact, its motion marked as ended by collision; contact sensors touching the other robot
+ * go hot with its name.
+ */
+final class RobotContacts {
+    /** Largest relative displacement between samples, metres. */
+    private static final double SAMPLE_SPACING = 0.005;
+    /**
+     * How far past the next evaluation the search looks, seconds: a contact just after it would
+     * otherwise be found one step late, when the robot can no longer stop a millisecond before it.
+     */
+    static final double LOOK_AHEAD = 0.002;
+    /** The contact time is narrowed down to this, seconds. */
+    private static final double PRECISION = 1.0e-5;
+
+    private RobotContacts() {
+    }
+
+    /** Searches [from, to] for contacts between moving robots and every other placed robot. */
+    static void resolve(List<Robot> placed, double from, double to) {
+        int n = placed.size();
+        for (int i = 0; i < n; i++) {
+            Robot a = placed.get(i);
+            for (int j = i + 1; j < n; j++) {
+                Robot b = placed.get(j);
+                if ((a.isMoving() || b.isMoving()) && !a.shapes().isEmpty() && !b.shapes().isEmpty()) {
+                    resolvePair(a, b, from, to);
+                }
+            }
+        }
+    }
+
+    private static void resolvePair(Robot a, Robot b, double from, double to) {
+        double speed = speedBound(a) + speedBound(b);
+        if (speed <= 0.0 || !sweptBoundsMeet(a, b, from, to)) {
+            return;
+        }
+        double step = SAMPLE_SPACING / speed;
+        double clear = from;
+        if (touch(a, b, from)) {
+            stop(a, b, from, from);
+            return;
+        }
+        for (double t = Math.min(to, from + step); ; t = Math.min(to, t + step)) {
+            if (touch(a, b, t)) {
+                double contact = narrow(a, b, clear, t);
+                stop(a, b, contact, from);
+                return;
+            }
+            clear = t;
+            if (t >= to) {
+                return;
+            }
+        }
+    }
+
+    /** The first touching time in (clear, touching], to {@link #PRECISION}. */
+    private static double narrow(Robot a, Robot b, double clear, double touching) {
+        while (touching - clear > PRECISION) {
+            double mid = 0.5 * (clear + touching);
+            if (touch(a, b, mid)) {
+                touching = mid;
+            } else {
+                clear = mid;
+            }
+        }
+        return touching;
+    }
+
+    private static boolean touch(Robot a, Robot b, double t) {
+        return RobotShapes.overlap(edgesAt(a, t), edgesAt(b, t));
+    }
+
+    private static RsSegment[][] edgesAt(Robot r, double t) {
+        return r.shapes().edgesAt(r.motion().getPoseAtTime(t));
+    }
+
+    /** Upper bound of the speed of any point of the robot's shapes under its current motion. */
+    private static double speedBound(Robot r) {
+        RsMotion m = r.motion();
+        if (!r.isMoving() || m == null) {
+            return 0.0;
+        }
+        return Math.abs(m.getVelocity()) + Math.abs(m.getTurnRate()) * r.shapes().reach();
+    }
+
+    private static boolean sweptBoundsMeet(Robot a, Robot b, double from, double to) {
+        return swept(a, from, to).intersects(swept(b, from, to));
+    }
+
+    private static RsRectangle swept(Robot r, double from, double to) {
+        RsRectangle box = RobotShapes.bounds(edgesAt(r, from));
+        double grow = speedBound(r) * (to - from) + SAMPLE_SPACING;
+        box.setBounds(box.x - grow, box.y - grow, box.width + 2 * grow, box.height + 2 * grow);
+        return box;
+    }
+
+    /** Stops each moving robot of the pair before {@code contact} (not before {@code now}). */
+    private static void stop(Robot a, Robot b, double contact, double now) {
+        stopOne(a, b, contact, now);
+        stopOne(b, a, contact, now);
+    }
+
+    private static void stopOne(Robot r, Robot other, double contact, double now) {
+        RsMotion m = r.motion();
+        if (!r.isMoving() || m == null) {
+            return;
+        }
+        double stopAt = Math.max(now, m.time0 + Math.max(0.0, Math.floor(1000.0 * (contact - m.time0) - 0.1) / 1000.0));
+        if (stopAt >= m.time1) {
+            return;
+        }
+        m.stopMotionAtTime(stopAt);
+        m.collision = true;
+        m.collisionTime = contact - m.time0;
+        r.getBody().setCollision(true);
+        flagContactSensors(r, other, contact);
+    }
+
+    /** Contact sensors touching the other robot at the contact time are flagged with its name; others are not. */
+    private static void flagContactSensors(Robot r, Robot other, double contact) {
+        RsSegment[][] otherEdges = edgesAt(other, contact);
+        RsTransform pose = r.motion().getPoseAtTime(contact);
+        for (RsBodySensor s : r.getBody().getBodySensorArray()) {
+            if (s instanceof RsBodyContactSensor) {
+                RsBodyContactSensor c = (RsBodyContactSensor) s;
+                boolean touching = RobotShapes.overlap(new RsSegment[][] {outlineAt(c, pose)}, otherEdges);
+                c.setCollision(touching, touching ? other.getLabel() : null);
+            }
+        }
+    }
+
+    private static RsSegment[] outlineAt(RsBodyContactSensor c, RsTransform pose) {
+        RsSegment[] ref = c.getSegmentArray();
+        RsSegment[] out = new RsSegment[ref.length];
+        for (int i = 0; i < ref.length; i++) {
+            out[i] = new RsSegment();
+            pose.map2(ref[i], out[i]);
+        }
+        return out;
+    }
+}

@@ -1,0 +1,137 @@
+package rp1.simulator.world;
+
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyShape;
+import rp1.rossum.RsRectangle;
+import rp1.rossum.RsSegSect;
+import rp1.rossum.RsSegment;
+import rp1.rossum.RsTransform;
+import rp1.rossum.RsWall;
+
+/**
+ * A robot's interactive shapes (the parts that collide) in body coordinates, with what the world needs
+ * from them: their outlines at a pose as wall polygons (so other robots' sensors and collision
+ * searches see this robot), overlap with another robot, and how far from the body origin they reach.
+ */
+final class RobotShapes {
+    private final double[][] outlines;
+    private final double reach;
+
+    RobotShapes(RsBody body) {
+        RsBodyShape[] shapes = body.getInteractiveBodyShapeArray();
+        outlines = new double[shapes.length][];
+        double r = 0.0;
+        for (int i = 0; i < shapes.length; i++) {
+            outlines[i] = shapes[i].getOutlineVertices();
+            for (int k = 0; k + 1 < outlines[i].length; k += 2) {
+                r = Math.max(r, Math.hypot(outlines[i][k], outlines[i][k + 1]));
+            }
+        }
+        reach = r;
+    }
+
+    /** The largest distance of any outline vertex from the body origin, metres. */
+    double reach() {
+        return reach;
+    }
+
+    boolean isEmpty() {
+        return outlines.length == 0;
+    }
+
+    /** The shapes at {@code pose} as walls named {@code name}; shapes without area are left out. */
+    RsWall[] asWalls(RsTransform pose, String name) {
+        RsWall[] walls = new RsWall[outlines.length];
+        int n = 0;
+        for (double[] outline : outlines) {
+            RsWall w = new RsWall(name, null);
+            w.setGeometry(map(outline, pose));
+            if (w.isGeometrySet) {
+                walls[n++] = w;
+            }
+        }
+        return n == walls.length ? walls : java.util.Arrays.copyOf(walls, n);
+    }
+
+    /** The shapes' edges at {@code pose}, one array per shape. */
+    RsSegment[][] edgesAt(RsTransform pose) {
+        RsSegment[][] edges = new RsSegment[outlines.length][];
+        for (int i = 0; i < outlines.length; i++) {
+            double[] xy = map(outlines[i], pose);
+            int n = xy.length / 2;
+            edges[i] = new RsSegment[n];
+            for (int k = 0; k < n; k++) {
+                int j = (k + 1) % n;
+                edges[i][k] = new RsSegment(xy[2 * k], xy[2 * k + 1], xy[2 * j], xy[2 * j + 1]);
+            }
+        }
+        return edges;
+    }
+
+    /** The bounding box of the shapes at {@code pose}. */
+    static RsRectangle bounds(RsSegment[][] edges) {
+        RsRectangle r = new RsRectangle();
+        for (RsSegment[] shape : edges) {
+            for (RsSegment s : shape) {
+                r.insert(s.x, s.y);
+            }
+        }
+        return r;
+    }
+
+    /** Whether two sets of shapes touch: an edge of one crosses an edge of the other, or one holds a vertex of the other. */
+    static boolean overlap(RsSegment[][] a, RsSegment[][] b) {
+        RsSegSect sect = new RsSegSect();
+        for (RsSegment[] pa : a) {
+            for (RsSegment[] pb : b) {
+                if (edgesCross(pa, pb, sect) || contains(pa, pb[0]) || contains(pb, pa[0])) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    private static boolean edgesCross(RsSegment[] a, RsSegment[] b, RsSegSect sect) {
+        for (RsSegment ea : a) {
+            for (RsSegment eb : b) {
+                if (sect.process(ea, eb)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Even-odd containment of a point (the start of segment {@code p}) in a closed polygon; each edge
+     * ends where the next begins, so a vertex on the ray is counted consistently.
+     */
+    private static boolean contains(RsSegment[] polygon, RsSegment p) {
+        if (polygon.length < 3) {
+            return false;
+        }
+        boolean inside = false;
+        for (int i = 0; i < polygon.length; i++) {
+            RsSegment e = polygon[i];
+            RsSegment next = polygon[(i + 1) % polygon.length];
+            double y0 = e.y;
+            double y1 = next.y;
+            if ((y0 > p.y) != (y1 > p.y) && p.x < e.x + (p.y - y0) / (y1 - y0) * (next.x - e.x)) {
+                inside = !inside;
+            }
+        }
+        return inside;
+    }
+
+    private static double[] map(double[] outline, RsTransform pose) {
+        double[] xy = new double[outline.length];
+        for (int k = 0; k + 1 < outline.length; k += 2) {
+            double x = outline[k];
+            double y = outline[k + 1];
+            xy[k] = pose.m11 * x + pose.m12 * y + pose.m13;
+            xy[k + 1] = pose.m21 * x + pose.m22 * y + pose.m23;
+        }
+        return xy;
+    }
+}

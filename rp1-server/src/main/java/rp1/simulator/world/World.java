@@ -1,0 +1,248 @@
+package rp1.simulator.world;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Random;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyRangeSensor;
+import rp1.rossum.RsBodySensor;
+import rp1.rossum.RsBodyTargetSensor;
+import rp1.rossum.RsPlacement;
+import rp1.rossum.RsPlan;
+import rp1.rossum.RsRectangle;
+import rp1.rossum.RsTransform;
+import rp1.rossum.RsWall;
+import rp1.rossum.event.RsPlacementEvent;
+import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.request.RsPainterChangeRequest;
+import rp1.simulator.scheduler.Scheduler;
+
+/**
+ * The simulated world: the floor plan and the robots in it. Robots join when their client sends a
+ * body, in that order; every client with a body is a robot here, and robots collide with each other
+ * and see each other with their range sensors (RP1 0.60 let them pass through each other unseen).
+ *
+ * <p>All changes happen on the scheduler thread, through tasks the client sessions queue, except
+ * joining (a reader thread may add a robot; the list is safe for that).
+ */
+public final class World {
+    /** Random poses ("$random") are drawn this many times before the placement fails. */
+    static final int RANDOM_PLACEMENT_ATTEMPTS = 50;
+
+    private final RsPlan plan;
+    private final RsWall[] walls;
+    private final Random random;
+    private final MotionStepper stepper;
+    private final List<Robot> robots = new CopyOnWriteArrayList<>();
+    private final List<WorldListener> listeners = new CopyOnWriteArrayList<>();
+    private int joined;
+
+    /**
+     * @param plan      the floor plan
+     * @param scheduler the simulation's scheduler
+     * @param interval  seconds between motion evaluations (the modelling interval)
+     * @param random    the simulation's one seeded random source
+     */
+    public World(RsPlan plan, Scheduler scheduler, double interval, Random random) {
+        this.plan = plan;
+        this.walls = plan.getWallArray();
+        this.random = random;
+        this.stepper = new MotionStepper(this, scheduler, interval);
+        plan.setRandom(random);
+    }
+
+    public RsPlan getPlan() {
+        return plan;
+    }
+
+    /** The plan's walls and obstacles. */
+    RsWall[] getWalls() {
+        return walls;
+    }
+
+    /** The robots in the order they joined. */
+    public List<Robot> getRobots() {
+        return Collections.unmodifiableList(robots);
+    }
+
+    /** The robots currently on the floor, in joining order. */
+    public List<Robot> getPlacedRobots() {
+        List<Robot> placed = new ArrayList<>();
+        for (Robot r : robots) {
+            if (r.isPlaced()) {
+                placed.add(r);
+            }
+        }
+        return placed;
+    }
+
+    /** A client's body joins the world as an unplaced robot. */
+    public synchronized Robot addRobot(RsBody body, EventSink events) {
+        Robot r = new Robot(++joined, body, events);
+        robots.add(r);
+        return r;
+    }
+
+    /** A robot leaves (its client went away); the motion task goes when no robot is left. */
+    public void removeRobot(Robot r) {
+        robots.remove(r);
+        r.markUnplaced();
+        if (robots.isEmpty()) {
+            stepper.cancel();
+        }
+        changed(Double.NaN);
+    }
+
+    /** A motion request for a placed robot: it starts at the robot's next evaluation. */
+    public void requestMotion(Robot r, RsMotionRequest request, double time) {
+        if (!r.isPlaced() || request == null) {
+            return;
+        }
+        r.setPendingRequest(request);
+        stepper.wake(time);
+    }
+
+    /** A halt request: the waiting request is dropped and a motion under way stops now. */
+    public void halt(Robot r, double time) {
+        r.halt(time);
+    }
+
+    /**
+     * A placement request (behavior.md section 7): by name, at a random one of the plan's placements
+     * (null or empty name), or at a random free pose ("$random"). A pose is clear if the robot
+     * overlaps no wall and no other robot on the floor. Answers with a placement event. The motion
+     * task is queued before the event goes out, so that requests the client sends in answer to it
+     * always come after the evaluation of the new pose.
+     */
+    public void place(Robot r, String name, double time) {
+        String requested = name == null ? "" : name;
+        RsPlacementEvent event = findPlacement(r, requested, time);
+        if (event.valid) {
+            r.place(time, event.x, event.y, event.orientation);
+            stepper.wake(time);
+        } else {
+            r.markUnplaced();
+        }
+        r.events().send(event);
+        changed(time);
+    }
+
+    private RsPlacementEvent findPlacement(Robot r, String requested, double time) {
+        if (plan.getObjectCount() == 0) {
+            return invalid(time, "");
+        }
+        RsWall[] obstacles = placementObstacles(r);
+        if (requested.equals("$random")) {
+            return randomPose(r, obstacles, time);
+        }
+        if (requested.isEmpty()) {
+            return randomPlacement(r, obstacles, time);
+        }
+        for (RsPlacement p : plan.getPlacementArray()) {
+            if (p.getName().equals(requested)) {
+                return clear(r, obstacles, p.x, p.y, p.orientation)
+                        ? new RsPlacementEvent(time, true, p.getName(), p.x, p.y, p.orientation)
+                        : invalid(time, requested);
+            }
+        }
+        return invalid(time, requested);
+    }
+
+    private RsPlacementEvent randomPose(Robot r, RsWall[] obstacles, double time) {
+        RsRectangle b = plan.getBounds();
+        for (int i = 0; i < RANDOM_PLACEMENT_ATTEMPTS; i++) {
+            double x = b.x + random.nextDouble() * b.width;
+            double y = b.y + random.nextDouble() * b.height;
+            double theta = random.nextDouble() * 2.0 * Math.PI;
+            if (clear(r, obstacles, x, y, theta)) {
+                return new RsPlacementEvent(time, true, "$random", x, y, theta);
+            }
+        }
+        return invalid(time, "$random");
+    }
+
+    private RsPlacementEvent randomPlacement(Robot r, RsWall[] obstacles, double time) {
+        List<RsPlacement> candidates = new ArrayList<>();
+        Collections.addAll(candidates, plan.getPlacementArray());
+        while (!candidates.isEmpty()) {
+            RsPlacement p = candidates.remove(random.nextInt(candidates.size()));
+            if (clear(r, obstacles, p.x, p.y, p.orientation)) {
+                return new RsPlacementEvent(time, true, p.getName(), p.x, p.y, p.orientation);
+            }
+        }
+        return invalid(time, "");
+    }
+
+    private static RsPlacementEvent invalid(double time, String name) {
+        return new RsPlacementEvent(time, false, name, 0.0, 0.0, 0.0);
+    }
+
+    private static boolean clear(Robot r, RsWall[] obstacles, double x, double y, double theta) {
+        return !r.getBody().checkForOverlap(obstacles, new RsTransform(theta, x, y));
+    }
+
+    /** Walls plus every other robot on the floor. */
+    private RsWall[] placementObstacles(Robot r) {
+        return withRobots(r, getPlacedRobots());
+    }
+
+    /**
+     * What blocks the robot's range and target sensors: the walls, plus the other robots on the floor
+     * if the robot has a sensor that walls affect.
+     */
+    RsWall[] obstaclesFor(Robot r, List<Robot> placed) {
+        return hasWallSensor(r) && placed.size() > 1 ? withRobots(r, placed) : walls;
+    }
+
+    private static boolean hasWallSensor(Robot r) {
+        for (RsBodySensor s : r.getBody().getBodySensorArray()) {
+            if (s instanceof RsBodyRangeSensor || s instanceof RsBodyTargetSensor) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private RsWall[] withRobots(Robot self, List<Robot> others) {
+        List<RsWall> all = new ArrayList<>(walls.length + 4 * others.size());
+        Collections.addAll(all, walls);
+        for (Robot o : others) {
+            if (o != self && o.isPlaced()) {
+                Collections.addAll(all, o.asObstacles());
+            }
+        }
+        return all.toArray(new RsWall[0]);
+    }
+
+    /** A painter-change request for one of the robot's painters. */
+    public void painterChange(Robot r, RsPainterChangeRequest request) {
+        r.changePainter(request);
+        changed(Double.NaN);
+    }
+
+    /** Clears every robot's paint trails (the view's "Remove Paint Trails"). */
+    public void removePaintTrails() {
+        for (Robot r : robots) {
+            r.eraseTrails();
+        }
+        changed(Double.NaN);
+    }
+
+    public void addListener(WorldListener l) {
+        listeners.add(l);
+    }
+
+    public void removeListener(WorldListener l) {
+        listeners.remove(l);
+    }
+
+    /** Tells the listeners the picture changed ({@code simTime} NaN when not at a motion step). */
+    public void changed(double simTime) {
+        for (WorldListener l : listeners) {
+            l.worldChanged(this, simTime);
+        }
+    }
+}

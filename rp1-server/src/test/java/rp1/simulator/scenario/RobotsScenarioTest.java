@@ -1,0 +1,99 @@
+package rp1.simulator.scenario;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+import rp1.rossum.event.RsMotionHaltedEvent;
+import rp1.rossum.event.RsPlacementEvent;
+import rp1.rossum.event.RsRangeSensorEvent;
+import rp1.rossum.request.RsMotionRequest;
+
+/** Several robots in one world: they meet (beyond RP1 0.60, where they passed through each other). */
+@Timeout(60)
+class RobotsScenarioTest {
+
+    @Test
+    void twoRobotsDrivingHeadOnBothHaltByCollisionJustShortOfEachOther() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient a = s.connect(new ScenarioClient(Bodies.round("a")));
+            ScenarioClient b = s.connect(new ScenarioClient(Bodies.round("b")));
+            a.once(RsPlacementEvent.class, e -> a.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 10.0)));
+            b.once(RsPlacementEvent.class, e -> b.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 10.0)));
+            a.sendPlacementRequest("west");
+            b.sendPlacementRequest("east");
+            RsMotionHaltedEvent ha = a.await(RsMotionHaltedEvent.class);
+            RsMotionHaltedEvent hb = b.await(RsMotionHaltedEvent.class);
+            // Fronts 7.7 m apart closing at 2 m/s: contact at 3.85 s; both stop at the millisecond before.
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, ha.causeOfHalt);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, hb.causeOfHalt);
+            assertEquals(3.849, ha.simTime, 1e-9);
+            assertEquals(3.849, hb.simTime, 1e-9);
+            assertEquals(1.0 + 3.849, ha.x, 1e-9);
+            assertEquals(9.0 - 3.849, hb.x, 1e-9);
+            double gap = hb.x - ha.x - 0.3;
+            assertTrue(gap > 0 && gap < 0.0025, "2 mm apart: " + gap);
+        }
+    }
+
+    @Test
+    void aRobotDrivingIntoAParkedRobotStopsAndTheParkedOneHearsNothing() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient parked = s.connect(new ScenarioClient(Bodies.round("parked")));
+            parked.sendPlacementRequest("centre");
+            parked.await(RsPlacementEvent.class);
+            ScenarioClient mover = s.connect(new ScenarioClient(Bodies.round("mover")));
+            mover.once(RsPlacementEvent.class, e -> mover.sendMotionRequest(new RsMotionRequest(2.0, 0.0, 5.0)));
+            mover.sendPlacementRequest("west");
+            RsMotionHaltedEvent h = mover.await(RsMotionHaltedEvent.class);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, h.causeOfHalt);
+            assertEquals(1.0 + 2.0 * Math.floor(1000.0 * 3.7 / 2.0 - 0.1) / 1000.0, h.x, 1e-9, "contact after 3.7 m");
+            assertTrue(parked.events(RsMotionHaltedEvent.class).isEmpty());
+        }
+    }
+
+    @Test
+    void rangeSensorsSeeOtherRobots() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient parked = s.connect(new ScenarioClient(Bodies.round("obstacle bot")));
+            parked.sendPlacementRequest("centre");
+            parked.await(RsPlacementEvent.class);
+            ScenarioClient seer = s.connect(new ScenarioClient(Bodies.withSonar("seer")));
+            seer.once(RsPlacementEvent.class, e -> seer.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 3.5)));
+            seer.sendPlacementRequest("west");
+            seer.await(RsMotionHaltedEvent.class);
+            RsRangeSensorEvent first = seer.events(RsRangeSensorEvent.class).get(0);
+            assertTrue(first.status);
+            assertEquals("obstacle bot", first.getNameOfObjectDetected());
+            assertEquals(2.7, first.simTime, 1e-9, "the parked robot's back is at x = 4.85: 1 m from the detector once x > 3.69");
+        }
+    }
+
+    @Test
+    void aPlacementOnTopOfAnotherRobotIsRefused() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient first = s.connect(new ScenarioClient(Bodies.round("first")));
+            first.sendPlacementRequest("centre");
+            assertTrue(first.await(RsPlacementEvent.class).valid);
+            ScenarioClient second = s.connect(new ScenarioClient(Bodies.round("second")));
+            second.sendPlacementRequest("centre");
+            RsPlacementEvent refused = second.await(RsPlacementEvent.class);
+            assertFalse(refused.valid);
+            assertEquals("centre", refused.name);
+        }
+    }
+
+    @Test
+    void aRobotWhoseClientLeavesIsNoLongerAnObstacle() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient leaving = s.connect(new ScenarioClient(Bodies.round("leaving")));
+            leaving.sendPlacementRequest("centre");
+            leaving.await(RsPlacementEvent.class);
+            leaving.setInputOutputStreams(null, null);
+            s.close();
+        }
+    }
+}

@@ -1,0 +1,159 @@
+package rp1.simulator.scenario;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.List;
+
+import rp1.planparser.RsParsingException;
+import rp1.planparser.RsPlanParser;
+import rp1.rossum.RsConnection;
+import rp1.rossum.RsLogInterface;
+import rp1.rossum.RsPipe;
+import rp1.rossum.RsPlan;
+import rp1.simulator.Simulation;
+import rp1.simulator.SimulationSettings;
+
+/**
+ * A whole simulation in one process for scenario tests: a floor plan, the simulation running on its
+ * own thread, and clients connected through the real request path (an {@code RsClient} and an
+ * {@code RsConnection} over in-memory pipes). By default it runs in lockstep with the interlock, so
+ * every run of the same scenario produces the same events.
+ */
+public final class Scenario implements AutoCloseable {
+    private final Simulation simulation;
+    private final Thread schedulerThread;
+    private final List<ScenarioClient> clients = new ArrayList<>();
+    private final List<Thread> threads = new ArrayList<>();
+    private final List<RsPipe> pipes = new ArrayList<>();
+    private final List<RsPipe> toServerPipes = new ArrayList<>();
+    private boolean started;
+
+    private Scenario(RsPlan plan, SimulationSettings settings) {
+        simulation = new Simulation(plan, settings, QUIET);
+        schedulerThread = new Thread(simulation::runPaused, "scenario-scheduler");
+        schedulerThread.setDaemon(true);
+        schedulerThread.start();
+    }
+
+    /** A lockstep simulation of {@code planText} with the default modelling interval of 0.05 s. */
+    public static Scenario lockstep(String planText) {
+        return new Scenario(plan(planText), SimulationSettings.lockstep(0.05, 1L));
+    }
+
+    /** A simulation of {@code planText} with the given settings. */
+    public static Scenario with(String planText, SimulationSettings settings) {
+        return new Scenario(plan(planText), settings);
+    }
+
+    /** A lockstep simulation of one of the floor plans shipped in FloorPlans/. */
+    public static Scenario shippedPlan(String fileName) {
+        try {
+            Path root = Paths.get(System.getProperty("rp1.root", "."));
+            return new Scenario(RsPlanParser.parseFile(root.resolve("FloorPlans").resolve(fileName)),
+                    SimulationSettings.lockstep(0.05, 1L));
+        } catch (IOException | RsParsingException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    static RsPlan plan(String text) {
+        try {
+            return RsPlanParser.parse(text, "scenario");
+        } catch (RsParsingException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
+        }
+    }
+
+    public Simulation simulation() {
+        return simulation;
+    }
+
+    /**
+     * Starts the clock once every client's first requests have been dealt with (their pipes to the
+     * server drained), so they are all stamped at time 0 whatever the threads did. Waiting for an
+     * event does this implicitly.
+     */
+    public synchronized void go() {
+        if (started) {
+            return;
+        }
+        long deadline = System.nanoTime() + 10_000_000_000L;
+        for (RsPipe p : toServerPipes) {
+            while (!p.isDrained()) {
+                if (System.nanoTime() > deadline) {
+                    throw new AssertionError("a client's requests were not read within 10 s");
+                }
+                Thread.onSpinWait();
+            }
+        }
+        started = true;
+        simulation.startClock();
+    }
+
+    /**
+     * Connects {@code client} in-process, sends its body and registers its recorders, then starts its
+     * event loop. Requests the test sends afterwards go through the real protocol.
+     */
+    public <C extends ScenarioClient> C connect(C client) {
+        RsPipe toServer = new RsPipe();
+        RsPipe toClient = new RsPipe();
+        pipes.add(toServer);
+        pipes.add(toClient);
+        toServerPipes.add(toServer);
+        RsConnection connection = new RsConnection();
+        connection.setInputOutputStreams(toServer.getInputStream(), toClient.getOutputStream());
+        simulation.attach(connection, "scenario client " + (clients.size() + 1));
+        start(connection, "scenario-connection");
+        client.setInputOutputStreams(toClient.getInputStream(), toServer.getOutputStream());
+        client.join();
+        client.beforeWaiting(this::go);
+        start(client, "scenario-client");
+        clients.add(client);
+        return client;
+    }
+
+    private void start(Runnable r, String name) {
+        Thread t = new Thread(r, name);
+        t.setDaemon(true);
+        t.start();
+        threads.add(t);
+    }
+
+    @Override
+    public void close() {
+        simulation.shutdown();
+        for (RsPipe p : pipes) {
+            try {
+                p.getOutputStream().close();
+                p.getInputStream().close();
+            } catch (IOException e) {
+                throw new IllegalStateException(e);
+            }
+        }
+    }
+
+    static final RsLogInterface QUIET = new RsLogInterface() {
+        @Override
+        public void logIt(String level, String message) {
+        }
+
+        @Override
+        public void log(String message) {
+        }
+
+        @Override
+        public void verbose(String message) {
+        }
+
+        @Override
+        public boolean getVerbosity() {
+            return false;
+        }
+
+        @Override
+        public void setVerbosity(boolean value) {
+        }
+    };
+}

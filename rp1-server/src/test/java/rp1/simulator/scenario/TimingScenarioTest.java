@@ -1,0 +1,107 @@
+package rp1.simulator.scenario;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+import rp1.rossum.event.RsEvent;
+import rp1.rossum.event.RsHeartbeatEvent;
+import rp1.rossum.event.RsPlanEvent;
+import rp1.rossum.event.RsTimeoutEvent;
+
+/** Timeouts, heartbeats and their order at equal times (behavior.md sections 4.1 and 4.3). */
+@Timeout(60)
+class TimingScenarioTest {
+
+    private static List<String> timing(ScenarioClient c) {
+        List<String> out = new ArrayList<>();
+        for (RsEvent e : c.events()) {
+            if (e instanceof RsTimeoutEvent) {
+                out.add("timeout" + ((RsTimeoutEvent) e).timeoutIndex + "@" + e.simTime);
+            } else if (e instanceof RsHeartbeatEvent) {
+                out.add("beat" + ((RsHeartbeatEvent) e).sequence + "@" + e.simTime);
+            }
+        }
+        return out;
+    }
+
+    @Test
+    void atEqualTimesTimeoutsComeInRequestOrderAndHeartbeatsLast() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.on(RsHeartbeatEvent.class, b -> {
+                if (b.sequence == 3) {
+                    c.sendHeartbeatCancellationRequest();
+                }
+            });
+            c.sendHeartbeatRequest(0.5);
+            c.sendTimeoutRequest(1.0);
+            c.sendTimeoutRequest(0.5);
+            c.sendTimeoutRequest(1.0);
+            c.await(RsHeartbeatEvent.class, b -> b.sequence == 3);
+            c.sendTimeoutRequest(10.0);
+            c.await(RsTimeoutEvent.class, e -> e.timeoutIndex == 4);
+            assertEquals(Arrays.asList("timeout2@0.5", "beat1@0.5", "timeout1@1.0", "timeout3@1.0", "beat2@1.0", "beat3@1.5",
+                    "timeout4@11.5"), timing(c), "no beat after the cancellation sent at the third");
+        }
+    }
+
+    @Test
+    void heartbeatsDoNotDriftAndRestartTheirCountOnANewRequest() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.on(RsHeartbeatEvent.class, b -> {
+                if (b.sequence == 30 && b.simTime < 3.1) {
+                    c.sendHeartbeatRequest(0.25);
+                } else if (b.simTime > 3.1) {
+                    c.sendHeartbeatCancellationRequest();
+                }
+            });
+            c.sendHeartbeatRequest(0.1);
+            RsHeartbeatEvent thirtieth = c.await(RsHeartbeatEvent.class, b -> b.sequence == 30);
+            assertEquals(3.0, thirtieth.simTime, 0.0, "beat k at exactly k * 0.1, not a sum of 30 steps");
+            RsHeartbeatEvent restarted = c.await(RsHeartbeatEvent.class, b -> b.simTime > 3.1);
+            assertEquals(1, restarted.sequence, "a new request restarts the count");
+            assertEquals(3.25, restarted.simTime, 1e-12);
+        }
+    }
+
+    @Test
+    void aZeroLengthTimeoutReadsTheClock() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.once(RsTimeoutEvent.class, e -> c.sendTimeoutRequest(0.0));
+            c.sendTimeoutRequest(2.5);
+            RsTimeoutEvent second = c.await(RsTimeoutEvent.class, e -> e.timeoutIndex == 2);
+            assertEquals(2.5, second.simTime, "fires at the time it was requested");
+        }
+    }
+
+    @Test
+    void aNegativeTimeoutFiresAtOnceStampedInThePast() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.once(RsTimeoutEvent.class, e -> c.sendTimeoutRequest(-1.0));
+            c.sendTimeoutRequest(2.0);
+            RsTimeoutEvent past = c.await(RsTimeoutEvent.class, e -> e.timeoutIndex == 2);
+            assertEquals(1.0, past.simTime);
+        }
+    }
+
+    @Test
+    void thePlanEventIsStampedZeroAndResetsTheClientsClock() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.once(RsTimeoutEvent.class, e -> c.sendPlanRequest());
+            c.sendTimeoutRequest(4.0);
+            RsPlanEvent plan = c.await(RsPlanEvent.class);
+            assertEquals(0.0, plan.simTime);
+            assertEquals("hall", ((rp1.rossum.RsPlan) plan.plan).getCaption());
+        }
+    }
+}
