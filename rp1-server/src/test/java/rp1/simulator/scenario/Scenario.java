@@ -8,10 +8,9 @@ import java.util.List;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
-import rp1.rossum.RsConnection;
 import rp1.rossum.RsLogInterface;
-import rp1.rossum.RsPipe;
 import rp1.rossum.RsPlan;
+import rp1.simulator.InProcessClient;
 import rp1.simulator.Simulation;
 import rp1.simulator.SimulationSettings;
 
@@ -26,8 +25,7 @@ public final class Scenario implements AutoCloseable {
     private final Thread schedulerThread;
     private final List<ScenarioClient> clients = new ArrayList<>();
     private final List<Thread> threads = new ArrayList<>();
-    private final List<RsPipe> pipes = new ArrayList<>();
-    private final List<RsPipe> toServerPipes = new ArrayList<>();
+    private final List<InProcessClient> links = new ArrayList<>();
     private boolean started;
 
     private Scenario(RsPlan plan, SimulationSettings settings) {
@@ -80,8 +78,8 @@ public final class Scenario implements AutoCloseable {
             return;
         }
         long deadline = System.nanoTime() + 10_000_000_000L;
-        for (RsPipe p : toServerPipes) {
-            while (!p.isDrained()) {
+        for (InProcessClient link : links) {
+            while (!link.isDrained()) {
                 if (System.nanoTime() > deadline) {
                     throw new AssertionError("a client's requests were not read within 10 s");
                 }
@@ -97,16 +95,8 @@ public final class Scenario implements AutoCloseable {
      * event loop. Requests the test sends afterwards go through the real protocol.
      */
     public <C extends ScenarioClient> C connect(C client) {
-        RsPipe toServer = new RsPipe();
-        RsPipe toClient = new RsPipe();
-        pipes.add(toServer);
-        pipes.add(toClient);
-        toServerPipes.add(toServer);
-        RsConnection connection = new RsConnection();
-        connection.setInputOutputStreams(toServer.getInputStream(), toClient.getOutputStream());
-        simulation.attach(connection, "scenario client " + (clients.size() + 1));
-        start(connection, "scenario-connection");
-        client.setInputOutputStreams(toClient.getInputStream(), toServer.getOutputStream());
+        InProcessClient link = new InProcessClient(simulation, client, "scenario client " + (clients.size() + 1), false);
+        links.add(link);
         client.join();
         client.beforeWaiting(this::go);
         start(client, "scenario-client");
@@ -124,13 +114,8 @@ public final class Scenario implements AutoCloseable {
     @Override
     public void close() {
         simulation.shutdown();
-        for (RsPipe p : pipes) {
-            try {
-                p.getOutputStream().close();
-                p.getInputStream().close();
-            } catch (IOException e) {
-                throw new IllegalStateException(e);
-            }
+        for (InProcessClient link : links) {
+            link.close();
         }
     }
 

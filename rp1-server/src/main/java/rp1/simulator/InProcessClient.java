@@ -1,0 +1,79 @@
+package rp1.simulator;
+
+import java.io.IOException;
+
+import rp1.rossum.RsConnection;
+import rp1.rossum.RsPipe;
+import rp1.rossum.RsRunnable;
+import rp1.simulator.session.ClientSession;
+
+/**
+ * A client connected to a simulation in the same process through a pair of {@link RsPipe}s, with no
+ * handshake, as RP1's dynamically loaded clients are (behavior.md section 3.4): the server's end is
+ * attached and its reader started; the client is given the other ends. The caller then runs the
+ * client's {@code initialize()} and {@code run()}.
+ */
+public final class InProcessClient {
+    private final RsRunnable client;
+    private final RsPipe toServer = new RsPipe();
+    private final RsPipe toClient = new RsPipe();
+    private final RsConnection connection = new RsConnection();
+    private final ClientSession session;
+
+    /**
+     * Connects {@code client} to {@code simulation}: the connection is attached and its reader thread
+     * started, then {@code setInputOutputStreams} is called on the client and, if {@code shareLog},
+     * {@code setLogger} with the simulation's log.
+     */
+    public InProcessClient(Simulation simulation, RsRunnable client, String description, boolean shareLog) {
+        this.client = client;
+        connection.setInputOutputStreams(toServer.getInputStream(), toClient.getOutputStream());
+        session = simulation.attach(connection, description);
+        Thread reader = new Thread(connection, "connection " + description);
+        reader.setDaemon(true);
+        reader.start();
+        client.setInputOutputStreams(toClient.getInputStream(), toServer.getOutputStream());
+        if (shareLog) {
+            client.setLogger(simulation.getLog());
+        }
+    }
+
+    public RsRunnable getClient() {
+        return client;
+    }
+
+    public ClientSession getSession() {
+        return session;
+    }
+
+    /**
+     * Whether the server has dealt with everything the client sent so far (its reader is waiting for
+     * more). A lockstep simulation starts its clock once its in-process clients are drained after
+     * {@code initialize()}, so their first requests are all stamped at time 0.
+     */
+    public boolean isDrained() {
+        return toServer.isDrained();
+    }
+
+    /** Waits until {@link #isDrained()}, at most {@code millis}; returns whether it is. */
+    public boolean awaitDrained(long millis) throws InterruptedException {
+        long deadline = System.nanoTime() + millis * 1_000_000L;
+        while (!toServer.isDrained()) {
+            if (System.nanoTime() > deadline) {
+                return false;
+            }
+            Thread.sleep(1);
+        }
+        return true;
+    }
+
+    /** Closes both pipes: the client's event loop ends, and the server removes its robot. */
+    public void close() {
+        try {
+            toClient.getOutputStream().close();
+            toServer.getOutputStream().close();
+        } catch (IOException e) {
+            throw new IllegalStateException("closing an in-memory pipe cannot fail", e);
+        }
+    }
+}
