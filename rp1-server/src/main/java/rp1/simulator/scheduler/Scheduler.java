@@ -44,19 +44,23 @@ public final class Scheduler {
      * @return false if the task was already queued
      */
     public synchronized boolean schedule(double time, int priority, Task task) {
+        return enqueue(false, time, priority, task);
+    }
+
+    /** Queues {@code task} to run before every timed task, at the then-current time. */
+    public synchronized boolean scheduleImmediate(Task task) {
+        return enqueue(true, 0.0, NORMAL, task);
+    }
+
+    private boolean enqueue(boolean immediate, double time, int priority, Task task) {
         if (queued.containsKey(task)) {
             return false;
         }
-        Entry e = new Entry(time, priority, sequence++, task);
+        Entry e = new Entry(immediate, time, priority, sequence++, task);
         queue.add(e);
         queued.put(task, e);
         notifyAll();
         return true;
-    }
-
-    /** Queues {@code task} to run before every timed task, at the then-current time. */
-    public boolean scheduleImmediate(Task task) {
-        return schedule(0.0, NORMAL, task);
     }
 
     /** Removes {@code task} from the queue; returns whether it was queued. */
@@ -91,7 +95,7 @@ public final class Scheduler {
     /** Time of the first queued timed task, or infinity. */
     private double horizon() {
         for (Entry e : queue) {
-            if (e.time > 0.0) {
+            if (!e.immediate) {
                 return e.time;
             }
         }
@@ -152,7 +156,7 @@ public final class Scheduler {
         }
         Entry head = queue.first();
         double now = clock.update(horizon());
-        if (head.time > now) {
+        if (!head.immediate && head.time > now) {
             if (!clock.isLockstep()) {
                 return null;
             }
@@ -161,7 +165,7 @@ public final class Scheduler {
         }
         queue.pollFirst();
         queued.remove(head.task);
-        head.runTime = head.time > 0.0 ? head.time : now;
+        head.runTime = head.immediate ? now : head.time;
         return head;
     }
 
@@ -218,15 +222,17 @@ public final class Scheduler {
         return Thread.currentThread() == loopThread;
     }
 
-    /** A queued task: ordered by time, then higher priority first, then insertion order. */
+    /** A queued task: immediate ones first, then by time, higher priority first, insertion order. */
     private static final class Entry implements Comparable<Entry> {
+        final boolean immediate;
         final double time;
         final int priority;
         final long sequence;
         final Task task;
         double runTime;
 
-        Entry(double time, int priority, long sequence, Task task) {
+        Entry(boolean immediate, double time, int priority, long sequence, Task task) {
+            this.immediate = immediate;
             this.time = time;
             this.priority = priority;
             this.sequence = sequence;
@@ -235,6 +241,9 @@ public final class Scheduler {
 
         @Override
         public int compareTo(Entry o) {
+            if (immediate != o.immediate) {
+                return immediate ? -1 : 1;
+            }
             int c = Double.compare(time, o.time);
             if (c != 0) {
                 return c;

@@ -104,6 +104,11 @@ public final class Scenario implements AutoCloseable {
         return client;
     }
 
+    /** Ends the connection of the client connected {@code index}-th (from 0), as if it went away. */
+    public void closeClient(int index) {
+        links.get(index).close();
+    }
+
     private void start(Runnable r, String name) {
         Thread t = new Thread(r, name);
         t.setDaemon(true);

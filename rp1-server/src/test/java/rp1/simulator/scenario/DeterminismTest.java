@@ -1,0 +1,103 @@
+package rp1.simulator.scenario;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+import rp1.rossum.RsBody;
+import rp1.rossum.event.RsEvent;
+import rp1.rossum.event.RsHeartbeatEvent;
+import rp1.rossum.event.RsMotionHaltedEvent;
+import rp1.rossum.event.RsPlacementEvent;
+import rp1.rossum.event.RsRangeSensorEvent;
+import rp1.rossum.event.RsTimeoutEvent;
+import rp1.rossum.request.RsMotionRequest;
+import rp1.simulator.SimulationSettings;
+
+/**
+ * The same floor plan, seed and client give the same events: byte-identical in lockstep on every run,
+ * and at the same simulated times whether the paced clock runs at speed 1 or 20.
+ */
+@Timeout(120)
+class DeterminismTest {
+
+    /**
+     * A wandering robot: random pose, heartbeats, a halt when a wall is near, then a turn (or, if it
+     * could not move at all, a step back) at every halt until t = 20 s.
+     */
+    private static String wander(Scenario s) throws InterruptedException {
+        Bodies.restartPartIds();
+        RsBody body = Bodies.withSonar("wanderer");
+        ScenarioClient c = s.connect(new ScenarioClient(body));
+        int[] turn = {0};
+        c.on(RsPlacementEvent.class, e -> c.sendMotionRequest(new RsMotionRequest(0.8, 0.0, 30.0)));
+        c.on(RsMotionHaltedEvent.class, e -> {
+            if (e.simTime < 20.0) {
+                turn[0]++;
+                if (e.duration < 0.01) {
+                    c.sendMotionRequest(new RsMotionRequest(-0.3, 0.0, 1.0));
+                } else {
+                    c.sendMotionRequest(new RsMotionRequest(0.3, (turn[0] % 2 == 0 ? 1 : -1) * 0.9, 1.5 + 0.1 * turn[0]));
+                }
+            }
+        });
+        c.on(RsRangeSensorEvent.class, e -> {
+            if (e.status && e.range < 0.3) {
+                c.sendHaltRequest();
+            }
+        });
+        c.sendHeartbeatRequest(0.7);
+        c.sendTimeoutRequest(25.0);
+        c.sendPlacementRequest("$random");
+        c.await(RsTimeoutEvent.class);
+        return c.transcript();
+    }
+
+    @Test
+    void theSameLockstepScenarioGivesTheSameEventStreamTwice() throws Exception {
+        String first;
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            first = wander(s);
+        }
+        String second;
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            second = wander(s);
+        }
+        assertTrue(first.split("\n").length > 40, "a long scenario:\n" + first);
+        assertEquals(first, second);
+    }
+
+    @Test
+    void aPacedClockAtSpeed1And20GivesTheSameSimulatedTimes() throws Exception {
+        String slow = pacedRun(1.0);
+        String fast = pacedRun(20.0);
+        assertEquals(slow, fast);
+    }
+
+    /** Two seconds of a robot approaching a wall with a heartbeat, interlock on, at {@code speed}. */
+    private static String pacedRun(double speed) throws InterruptedException {
+        try (Scenario s = Scenario.with(Plans.HALL_WITH_THIN_WALL, SimulationSettings.paced(0.05, speed, true, 7L))) {
+            Bodies.restartPartIds();
+            ScenarioClient c = s.connect(new ScenarioClient(Bodies.withSonar("bot")));
+            c.once(RsPlacementEvent.class, e -> {
+                c.sendHeartbeatRequest(0.25);
+                c.sendMotionRequest(new RsMotionRequest(1.8, 0.0, 2.0));
+            });
+            c.on(RsMotionHaltedEvent.class, e -> c.sendHeartbeatCancellationRequest());
+            c.sendPlacementRequest("west");
+            c.await(RsMotionHaltedEvent.class);
+            StringBuilder times = new StringBuilder();
+            List<RsEvent> events = c.events();
+            for (RsEvent e : events) {
+                if (!(e instanceof RsHeartbeatEvent) || e.simTime <= 2.0) {
+                    times.append(ScenarioClient.describe(e)).append('\n');
+                }
+            }
+            return times.toString();
+        }
+    }
+}
