@@ -6,7 +6,9 @@ import java.util.List;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsBodyPainter;
+import rp1.rossum.RsBodyRangeSensor;
 import rp1.rossum.RsBodySensor;
+import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.RsMotion;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsTransform;
@@ -34,6 +36,7 @@ public final class Robot {
     private final RobotShapes shapes;
     private final String label;
     private final List<PaintTrail> trails;
+    private final double sensingReach;
     private volatile boolean placed;
     private RsMotionRequest pending;
     private boolean moving;
@@ -51,6 +54,30 @@ public final class Robot {
             t.add(new PaintTrail(p));
         }
         trails = Collections.unmodifiableList(t);
+        sensingReach = sensingReach(body);
+    }
+
+    /**
+     * How far from the body origin the robot's range and target sensors can be affected by an
+     * obstacle (detector offset plus maximum range); 0 if it has none.
+     */
+    private static double sensingReach(RsBody body) {
+        double reach = 0.0;
+        for (RsBodySensor s : body.getBodySensorArray()) {
+            if (s instanceof RsBodyRangeSensor) {
+                RsBodyRangeSensor r = (RsBodyRangeSensor) s;
+                reach = Math.max(reach, Math.hypot(r.getXDetector(), r.getYDetector()) + r.getMaxRange());
+            } else if (s instanceof RsBodyTargetSensor) {
+                RsBodyTargetSensor t = (RsBodyTargetSensor) s;
+                reach = Math.max(reach, Math.hypot(t.getXDetector(), t.getYDetector()) + t.getMaxRange());
+            }
+        }
+        return reach;
+    }
+
+    /** See {@link #sensingReach(RsBody)}. */
+    double sensingReach() {
+        return sensingReach;
     }
 
     /** The order in which the robot joined the world, from 1. */

@@ -36,11 +36,17 @@ final class RobotContacts {
     /** Searches [from, to] for contacts between moving robots and every other placed robot. */
     static void resolve(List<Robot> placed, double from, double to) {
         int n = placed.size();
+        RsRectangle[] swept = new RsRectangle[n];
+        for (int i = 0; i < n; i++) {
+            Robot r = placed.get(i);
+            swept[i] = r.shapes().isEmpty() ? null : swept(r, from, to);
+        }
         for (int i = 0; i < n; i++) {
             Robot a = placed.get(i);
             for (int j = i + 1; j < n; j++) {
                 Robot b = placed.get(j);
-                if ((a.isMoving() || b.isMoving()) && !a.shapes().isEmpty() && !b.shapes().isEmpty()) {
+                if ((a.isMoving() || b.isMoving()) && swept[i] != null && swept[j] != null
+                        && swept[i].intersects(swept[j])) {
                     resolvePair(a, b, from, to);
                 }
             }
@@ -49,7 +55,7 @@ final class RobotContacts {
 
     private static void resolvePair(Robot a, Robot b, double from, double to) {
         double speed = speedBound(a) + speedBound(b);
-        if (speed <= 0.0 || !sweptBoundsMeet(a, b, from, to)) {
+        if (speed <= 0.0) {
             return;
         }
         double step = SAMPLE_SPACING / speed;
@@ -101,10 +107,7 @@ final class RobotContacts {
         return Math.abs(m.getVelocity()) + Math.abs(m.getTurnRate()) * r.shapes().reach();
     }
 
-    private static boolean sweptBoundsMeet(Robot a, Robot b, double from, double to) {
-        return swept(a, from, to).intersects(swept(b, from, to));
-    }
-
+    /** A box holding the robot's shapes throughout [from, to]. */
     private static RsRectangle swept(Robot r, double from, double to) {
         RsRectangle box = RobotShapes.bounds(edgesAt(r, from));
         double grow = speedBound(r) * (to - from) + SAMPLE_SPACING;

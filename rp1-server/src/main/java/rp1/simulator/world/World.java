@@ -3,13 +3,11 @@ package rp1.simulator.world;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 import java.util.concurrent.CopyOnWriteArrayList;
 
 import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyRangeSensor;
-import rp1.rossum.RsBodySensor;
-import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.RsPlacement;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsRectangle;
@@ -191,19 +189,31 @@ public final class World {
 
     /**
      * What blocks the robot's range and target sensors: the walls, plus the other robots on the floor
-     * if the robot has a sensor that walls affect.
+     * close enough to matter. {@code shapes} caches each robot's shapes as walls for one motion step.
      */
-    RsWall[] obstaclesFor(Robot r, List<Robot> placed) {
-        return hasWallSensor(r) && placed.size() > 1 ? withRobots(r, placed) : walls;
+    RsWall[] obstaclesFor(Robot r, List<Robot> placed, Map<Robot, RsWall[]> shapes) {
+        double reach = r.sensingReach();
+        if (reach == 0.0 || placed.size() < 2) {
+            return walls;
+        }
+        RsTransform pose = r.pose();
+        List<RsWall> all = null;
+        for (Robot o : placed) {
+            if (o == r || !near(pose, o, reach)) {
+                continue;
+            }
+            if (all == null) {
+                all = new ArrayList<>(walls.length + 8);
+                Collections.addAll(all, walls);
+            }
+            Collections.addAll(all, shapes.computeIfAbsent(o, Robot::asObstacles));
+        }
+        return all == null ? walls : all.toArray(new RsWall[0]);
     }
 
-    private static boolean hasWallSensor(Robot r) {
-        for (RsBodySensor s : r.getBody().getBodySensorArray()) {
-            if (s instanceof RsBodyRangeSensor || s instanceof RsBodyTargetSensor) {
-                return true;
-            }
-        }
-        return false;
+    private static boolean near(RsTransform pose, Robot o, double reach) {
+        RsTransform p = o.pose();
+        return Math.hypot(p.m13 - pose.m13, p.m23 - pose.m23) <= reach + o.shapes().reach();
     }
 
     private RsWall[] withRobots(Robot self, List<Robot> others) {

@@ -50,10 +50,13 @@ class DeterminismTest {
                 c.sendHaltRequest();
             }
         });
+        c.on(RsTimeoutEvent.class, e -> c.sendHeartbeatCancellationRequest());
         c.sendHeartbeatRequest(0.7);
         c.sendTimeoutRequest(25.0);
         c.sendPlacementRequest("$random");
         c.await(RsTimeoutEvent.class);
+        c.sendTimeoutRequest(0.0);
+        c.await(RsTimeoutEvent.class, e -> e.timeoutIndex == 2);
         return c.transcript();
     }
 

@@ -76,7 +76,7 @@ class SessionScenarioTest {
             c.once(RsPlacementEvent.class, e -> c.sendMotionRequest(new RsMotionRequest(0.1 * Math.PI, 0.0, 1.0)));
             c.once(RsMotionHaltedEvent.class, e -> c.sendMotionRequest(new RsMotionRequest(0.0, 0.0, 1.0)));
             c.on(RsMotionHaltedEvent.class, e -> {
-                if (e.simTime > 0.5) {
+                if (e.duration == 0.0) {
                     c.sendEncoderStatusRequest(encoders, true);
                 }
             });
