@@ -72,7 +72,7 @@ final class ProtocolExamples {
     private ProtocolExamples() {
     }
 
-    /** Every example, in document order. */
+    /** Every example, by name. */
     static Map<String, Example> all() {
         Map<String, Example> m = new LinkedHashMap<>();
         handshake(m);
@@ -199,51 +199,51 @@ final class ProtocolExamples {
             assertEquals(1, s.timeoutIndex);
         }));
         m.put("request-subscription", new Example(
-                () -> fromClient(3, c -> c.addTargetSensorEventHandler(targetSensor(), e -> { })), bytes -> {
+                () -> fromClient(4, c -> c.addTargetSensorEventHandler(targetSensor(), e -> { })), bytes -> {
                     RsSubscriptionRequest r = (RsSubscriptionRequest) request(bytes).last;
                     assertEquals(RsEvent.EVT_TARGET_SENSOR, r.eventCode);
                     assertEquals(5, r.eventIndex);
                     assertTrue(r.eventEnable);
                 }));
-        m.put("request-sensor-status", new Example(() -> fromClient(4, c -> c.sendSensorStatusRequest(targetSensor())),
+        m.put("request-sensor-status", new Example(() -> fromClient(5, c -> c.sendSensorStatusRequest(targetSensor())),
                 bytes -> assertEquals(5, ((RsSensorRequest) request(bytes).last).sensorID)));
         m.put("request-motion", new Example(
-                () -> fromClient(5, c -> c.sendMotionRequest(new RsMotionRequest(0.5, 0.25, 2.0))), bytes -> {
+                () -> fromClient(6, c -> c.sendMotionRequest(new RsMotionRequest(0.5, 0.25, 2.0))), bytes -> {
                     RsMotionRequest r = (RsMotionRequest) request(bytes).last;
                     assertEquals(0.5, r.linearVelocity);
                     assertEquals(0.25, r.rotationalVelocity);
                     assertEquals(2.0, r.duration);
                 }));
-        m.put("request-halt", new Example(() -> fromClient(6, RsClient::sendHaltRequest),
+        m.put("request-halt", new Example(() -> fromClient(7, RsClient::sendHaltRequest),
                 bytes -> assertEquals(List.of("halt"), request(bytes).calls)));
-        m.put("request-position", new Example(() -> fromClient(7, RsClient::sendPositionRequest),
+        m.put("request-position", new Example(() -> fromClient(8, RsClient::sendPositionRequest),
                 bytes -> assertEquals(List.of("position"), request(bytes).calls)));
         m.put("request-set-position", new Example(
-                () -> new WireOut().header(0, 0, 8, RsProtocol.REQUEST).i32(6).i32(0).toByteArray(),
+                () -> new WireOut().header(0, 0, 9, RsProtocol.REQUEST).i32(6).i32(0).toByteArray(),
                 bytes -> assertEquals(List.of("setPosition"), request(bytes).calls)));
-        m.put("request-placement", new Example(() -> fromClient(9, c -> c.sendPlacementRequest("home")), bytes -> {
+        m.put("request-placement", new Example(() -> fromClient(10, c -> c.sendPlacementRequest("home")), bytes -> {
             assertEquals(38, bytes.length);
             assertEquals("home", ((RsPlacementRequest) request(bytes).last).name);
         }));
-        m.put("request-placement-any", new Example(() -> fromClient(10, c -> c.sendPlacementRequest(null)), bytes -> {
+        m.put("request-placement-any", new Example(() -> fromClient(11, c -> c.sendPlacementRequest(null)), bytes -> {
             assertEquals(32, bytes.length);
             assertNull(((RsPlacementRequest) request(bytes).last).name);
         }));
         m.put("request-target-selection", new Example(
-                () -> fromClient(11, c -> c.sendExclusiveTargetSelectionRequest("candle")), bytes -> {
+                () -> fromClient(12, c -> c.sendExclusiveTargetSelectionRequest("candle")), bytes -> {
                     RsTargetSelectionRequest r = (RsTargetSelectionRequest) request(bytes).last;
                     assertFalse(r.random);
                     assertEquals("candle", r.name);
                     assertTrue(r.status);
                     assertTrue(r.exclusive);
                 }));
-        m.put("request-plan", new Example(() -> fromClient(12, RsClient::sendPlanRequest),
+        m.put("request-plan", new Example(() -> fromClient(13, RsClient::sendPlanRequest),
                 bytes -> assertEquals(List.of("plan"), request(bytes).calls)));
-        m.put("request-heartbeat", new Example(() -> fromClient(13, c -> c.sendHeartbeatRequest(0.5)),
+        m.put("request-heartbeat", new Example(() -> fromClient(14, c -> c.sendHeartbeatRequest(0.5)),
                 bytes -> assertEquals(0.5, ((RsHeartbeatRequest) request(bytes).last).interval)));
         painterRequests(m);
         m.put("request-actuator-control", new Example(
-                () -> fromClient(17, c -> c.sendActuatorControlRequest(steering().getControlRequestForWheelRotation(2.0, 4.0))),
+                () -> fromClient(18, c -> c.sendActuatorControlRequest(steering().getControlRequestForWheelRotation(2.0, 4.0))),
                 bytes -> {
                     RsActuatorControlRequest r = (RsActuatorControlRequest) request(bytes).last;
                     assertEquals(1, r.actuatorID);
@@ -251,7 +251,7 @@ final class ProtocolExamples {
                     assertArrayEquals(new String[] {"leftRotationalVelocity", "rightRotationalVelocity"}, r.getParameterNames());
                     assertArrayEquals(new double[] {2.0, 4.0}, r.getParameterValues());
                 }));
-        m.put("request-encoder-status", new Example(() -> fromClient(18, c -> {
+        m.put("request-encoder-status", new Example(() -> fromClient(19, c -> {
             RsEncoder[] encoders = steering().addEncodersToDefaultWheels(64);
             c.sendEncoderStatusRequest(encoders, true);
         }), bytes -> {
@@ -263,7 +263,7 @@ final class ProtocolExamples {
     }
 
     private static void painterRequests(Map<String, Example> m) {
-        m.put("request-painter-activation", new Example(() -> fromClient(14, c -> c.sendPainterActivationRequest(painter())),
+        m.put("request-painter-activation", new Example(() -> fromClient(15, c -> c.sendPainterActivationRequest(painter())),
                 bytes -> {
                     RsPainterChangeRequest r = (RsPainterChangeRequest) request(bytes).last;
                     assertEquals(7, r.painterID);
@@ -273,13 +273,13 @@ final class ProtocolExamples {
                     assertArrayEquals(new Color[] {Color.red}, r.color);
                 }));
         m.put("request-painter-deactivation", new Example(
-                () -> fromClient(15, c -> c.sendPainterDeactivationRequest(painter())), bytes -> {
+                () -> fromClient(16, c -> c.sendPainterDeactivationRequest(painter())), bytes -> {
                     RsPainterChangeRequest r = (RsPainterChangeRequest) request(bytes).last;
                     assertEquals(7, r.painterID);
                     assertFalse(r.erasure);
                     assertFalse(r.activation);
                 }));
-        m.put("request-painter-erasure", new Example(() -> fromClient(16, c -> c.sendPainterErasureRequest(painter())),
+        m.put("request-painter-erasure", new Example(() -> fromClient(17, c -> c.sendPainterErasureRequest(painter())),
                 bytes -> {
                     RsPainterChangeRequest r = (RsPainterChangeRequest) request(bytes).last;
                     assertEquals(7, r.painterID);
