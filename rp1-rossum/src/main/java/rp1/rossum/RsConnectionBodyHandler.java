@@ -1,6 +1,9 @@
 package rp1.rossum;
 
-/** Server side: receives the robot body a client specified. */
+/**
+ * Server side: receives the robot body a client specified, so that the simulator can put the robot
+ * into its world. The simulator registers one with {@link RsConnection#setBodyHandler}.
+ */
 public abstract class RsConnectionBodyHandler {
     public RsConnectionBodyHandler() {
     }

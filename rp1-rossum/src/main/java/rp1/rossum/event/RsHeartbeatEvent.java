@@ -1,7 +1,8 @@
 package rp1.rossum.event;
 
 /**
- * One beat of a periodic heartbeat requested with {@code sendHeartbeatRequest}.
+ * One beat of a periodic heartbeat requested with {@code sendHeartbeatRequest}: a steady tick in
+ * simulation time for clients that poll sensors or re-plan at regular intervals.
  */
 public class RsHeartbeatEvent extends RsEvent {
     private static final long serialVersionUID = 1L;

@@ -1,6 +1,9 @@
 package rp1.rossum.request;
 
-/** Send a timeout event after a duration of simulation time. */
+/**
+ * Send a timeout event after a duration of simulation time. Clients send it with
+ * {@code RsClient.sendTimeoutRequest} to be woken up later, e.g. to end a manoeuvre.
+ */
 public class RsTimeoutRequest extends RsRequest {
     private static final long serialVersionUID = 1L;
 
