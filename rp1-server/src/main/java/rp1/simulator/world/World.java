@@ -36,6 +36,7 @@ public final class World {
     private final MotionStepper stepper;
     private final List<Robot> robots = new CopyOnWriteArrayList<>();
     private final List<WorldListener> listeners = new CopyOnWriteArrayList<>();
+    private final List<PaintTrail> departedTrails = new CopyOnWriteArrayList<>();
     private int joined;
 
     /**
@@ -84,9 +85,14 @@ public final class World {
         return r;
     }
 
-    /** A robot leaves (its client went away); the motion task goes when no robot is left. */
+    /**
+     * A robot leaves (its client went away); its paint trails stay on the floor, and the motion task
+     * goes when no robot is left.
+     */
     public void removeRobot(Robot r) {
-        robots.remove(r);
+        if (robots.remove(r)) {
+            departedTrails.addAll(r.getTrails());
+        }
         r.markUnplaced();
         if (robots.isEmpty()) {
             stepper.cancel();
@@ -233,12 +239,18 @@ public final class World {
         changed(Double.NaN);
     }
 
-    /** Clears every robot's paint trails (the view's "Remove Paint Trails"). */
+    /** Clears every paint trail, those of departed robots too (the view's "Remove Paint Trails"). */
     public void removePaintTrails() {
         for (Robot r : robots) {
             r.eraseTrails();
         }
+        departedTrails.clear();
         changed(Double.NaN);
+    }
+
+    /** The trails of robots whose clients left, which stay on the floor (behavior.md section 9). */
+    public List<PaintTrail> getDepartedTrails() {
+        return Collections.unmodifiableList(departedTrails);
     }
 
     public void addListener(WorldListener l) {
