@@ -26,6 +26,7 @@ public final class SnapshotPublisher implements WorldListener, AutoCloseable {
     private final AtomicBoolean changed = new AtomicBoolean(true);
     private final AtomicReference<WorldSnapshot> latest;
     private final Task capture = this::capture;
+    private volatile boolean closed;
 
     /** Starts observing the simulation's world; the first snapshot shows the plan alone. */
     public SnapshotPublisher(Simulation simulation) {
@@ -43,10 +44,10 @@ public final class SnapshotPublisher implements WorldListener, AutoCloseable {
 
     /**
      * The latest snapshot; if the world has changed since it was taken, a fresh one is requested and
-     * a later poll returns it. Any thread; never blocks.
+     * a later poll returns it. Any thread; never blocks. After {@link #close()}, always the last one.
      */
     public WorldSnapshot poll() {
-        if (changed.get()) {
+        if (!closed && changed.get()) {
             scheduler.scheduleImmediate(capture);
         }
         return latest.get();
@@ -61,6 +62,7 @@ public final class SnapshotPublisher implements WorldListener, AutoCloseable {
     /** Stops observing; a capture still queued is withdrawn. */
     @Override
     public void close() {
+        closed = true;
         world.removeListener(this);
         scheduler.cancel(capture);
     }
