@@ -1,0 +1,81 @@
+package rp1.view;
+
+import java.awt.Color;
+import java.awt.Graphics2D;
+
+import rp1.rossum.RsBodyCircle;
+import rp1.rossum.RsBodyPart;
+import rp1.rossum.RsBodyShape;
+import rp1.rossum.RsPoint;
+import rp1.rossum.RsTransform;
+import rp1.rossum.RsWheel;
+import rp1.simulator.snapshot.PartSnapshot;
+import rp1.simulator.snapshot.RobotSnapshot;
+
+/**
+ * Draws a robot from its snapshot (behavior.md section 10): the parts in body order, each filled and
+ * outlined in its hot colours if the snapshot has it hot, else in its cold ones (a null colour is
+ * not drawn); circles as true circles; wheels turned about their hubs by the snapshot's steering
+ * angle. The parts' own paint methods read the live hot flag and steering, which the scheduler
+ * thread keeps changing, so they are not used here.
+ */
+final class RobotPainter {
+    private RobotPainter() {
+    }
+
+    static void paint(Graphics2D g, RobotSnapshot robot, RsTransform worldToPixel) {
+        RsTransform bodyToPixel = new RsTransform(worldToPixel, robot.pose());
+        for (PartSnapshot p : robot.parts()) {
+            paintPart(g, p, bodyToPixel);
+        }
+    }
+
+    private static void paintPart(Graphics2D g, PartSnapshot p, RsTransform t) {
+        RsBodyPart part = p.part();
+        Color fill = p.hot() ? part.getHotFillColor() : part.getColdFillColor();
+        Color line = p.hot() ? part.getHotLineColor() : part.getColdLineColor();
+        if (part instanceof RsBodyCircle c) {
+            circle(g, t, c, fill, line);
+        } else if (part instanceof RsWheel w) {
+            RsTransform steered = new RsTransform(t, RsTransform.rotationAbout(p.steering(), w.getX(), w.getY()));
+            polygon(g, steered, w.getOutlineVertices(), fill, line);
+        } else if (part instanceof RsBodyShape s) {
+            polygon(g, t, s.getOutlineVertices(), fill, line);
+        }
+    }
+
+    private static void circle(Graphics2D g, RsTransform t, RsBodyCircle c, Color fill, Color line) {
+        RsPoint centre = t.map(c.getXCenter(), c.getYCenter());
+        int r = (int) Math.round(c.getRadius() * t.getScale());
+        int x = (int) Math.round(centre.x) - r;
+        int y = (int) Math.round(centre.y) - r;
+        if (fill != null) {
+            g.setColor(fill);
+            g.fillOval(x, y, 2 * r, 2 * r);
+        }
+        if (line != null) {
+            g.setColor(line);
+            g.drawOval(x, y, 2 * r, 2 * r);
+        }
+    }
+
+    private static void polygon(Graphics2D g, RsTransform t, double[] xy, Color fill, Color line) {
+        int n = xy.length / 2;
+        if (n == 0) {
+            return;
+        }
+        int[] xs = new int[n];
+        int[] ys = new int[n];
+        for (int i = 0; i < n; i++) {
+            t.iMapArrayIndex(xy[2 * i], xy[2 * i + 1], i, xs, ys);
+        }
+        if (fill != null) {
+            g.setColor(fill);
+            g.fillPolygon(xs, ys, n);
+        }
+        if (line != null) {
+            g.setColor(line);
+            g.drawPolygon(xs, ys, n);
+        }
+    }
+}

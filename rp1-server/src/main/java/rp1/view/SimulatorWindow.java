@@ -1,0 +1,104 @@
+package rp1.view;
+
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+
+import javax.swing.JFrame;
+import javax.swing.Timer;
+import javax.swing.WindowConstants;
+
+import rp1.rossum.RsPlan;
+import rp1.simulator.Simulation;
+import rp1.simulator.snapshot.SnapshotPublisher;
+import rp1.simulator.snapshot.WorldSnapshot;
+
+/**
+ * The simulator's window (behavior.md section 10): the plan canvas, the status panel and the menus.
+ * An animation timer polls the latest snapshot at the animation frame rate; the simulation never
+ * waits for the window. Closing the window or File → Exit runs the exit callback on a thread of its
+ * own (the server decides how to shut down). Create and use on the event thread.
+ */
+final class SimulatorWindow {
+    /** The title of a window whose plan has no caption. */
+    static final String UNTITLED = "Rossum's Playhouse -- Untitled Plan";
+
+    private final JFrame frame;
+    private final PlanCanvas canvas;
+    private final StatusPanel status;
+    private final SnapshotPublisher publisher;
+    private final Timer timer;
+    private WorldSnapshot shown;
+
+    /**
+     * Builds and shows the window.
+     *
+     * @param simulation    the simulation shown
+     * @param frameInterval seconds of wall time between animation frames
+     * @param exit          run (on its own thread) when the user closes the window or chooses Exit
+     */
+    SimulatorWindow(Simulation simulation, double frameInterval, Runnable exit) {
+        RsPlan plan = simulation.getWorld().getPlan();
+        publisher = new SnapshotPublisher(simulation);
+        shown = publisher.poll();
+        DisplayUnits units = DisplayUnits.of(plan.getUnits());
+        status = new StatusPanel(units);
+        canvas = new PlanCanvas(new Renderer(plan), shown, simulation, status::showPointer);
+        status.showState(shown);
+        Runnable exitOnItsThread = () -> {
+            Thread t = new Thread(exit, "rp1-view-exit");
+            t.start();
+        };
+        frame = new JFrame(title(plan));
+        frame.setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
+        frame.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                exitOnItsThread.run();
+            }
+        });
+        frame.setJMenuBar(Menus.build(units, status::setUnits, canvas, simulation::removePaintTrails, exitOnItsThread));
+        frame.getContentPane().setBackground(Color.lightGray);
+        frame.getContentPane().add(canvas, BorderLayout.CENTER);
+        frame.getContentPane().add(status, BorderLayout.SOUTH);
+        frame.setSize(500, 400);
+        timer = new Timer((int) Math.max(1, Math.round(frameInterval * 1000.0)), e -> animate());
+        timer.start();
+        frame.setVisible(true);
+    }
+
+    /** The title: the plan's caption, or the original's text for an untitled plan. */
+    static String title(RsPlan plan) {
+        String caption = plan.getCaption();
+        return caption == null || caption.isEmpty() ? UNTITLED : caption;
+    }
+
+    private void animate() {
+        WorldSnapshot s = publisher.poll();
+        if (s != shown) {
+            shown = s;
+            canvas.show(s);
+            status.showState(s);
+        }
+    }
+
+    JFrame frame() {
+        return frame;
+    }
+
+    PlanCanvas canvas() {
+        return canvas;
+    }
+
+    StatusPanel status() {
+        return status;
+    }
+
+    /** Stops the animation, stops observing the simulation and closes the window. */
+    void close() {
+        timer.stop();
+        publisher.close();
+        frame.dispose();
+    }
+}

@@ -1,0 +1,143 @@
+package rp1.view;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
+
+import rp1.rossum.RsLogInterface;
+import rp1.simulator.Simulation;
+import rp1.simulator.scheduler.Scheduler;
+import rp1.simulator.scheduler.Task;
+import rp1.simulator.snapshot.WorldSnapshot;
+import rp1.simulator.world.World;
+import rp1.simulator.world.WorldListener;
+
+/**
+ * Writes PNG pictures of the world (plan, trails, robots) without any display: with an interval,
+ * one at every multiple of the interval of simulated time while the world changes, named
+ * {@code NAME-TTTT.TTT.EXT} after the file name given (e.g. {@code run-0012.500.png} for
+ * {@code run.png} at 12.5 s); and one at {@link #close()}, under the file name itself.
+ *
+ * <p>The pictures are snapshots taken by a task on the scheduler thread, run after every other task
+ * due at the same time (so a picture shows everything that happened up to its time). The task
+ * sends nothing and changes nothing; it is queued only while the world changes, so a world at rest
+ * is not kept busy, and a lockstep clock is never driven forward by pictures alone. Drawing and
+ * encoding happen on a writer thread; should it fall behind by more than a few pictures, the
+ * scheduler thread draws the next one itself, which can slow a paced simulation but never change it.
+ */
+public final class SnapshotWriter implements WorldListener, AutoCloseable {
+    private static final int QUEUED_PICTURES = 4;
+    private static final long CLOSE_WAIT_SECONDS = 60;
+
+    private final World world;
+    private final Scheduler scheduler;
+    private final Renderer renderer;
+    private final Path file;
+    private final double interval;
+    private final RsLogInterface log;
+    private final ThreadPoolExecutor writer;
+    private final Task picture = this::picture;
+    private boolean changed;
+    private boolean armed;
+    private boolean closed;
+
+    /**
+     * @param simulation the simulation to picture
+     * @param file       where the picture at exit goes; interval pictures are named after it
+     * @param interval   simulated seconds between pictures; 0 for the picture at exit only
+     * @param log        where write failures are reported
+     */
+    public SnapshotWriter(Simulation simulation, Path file, double interval, RsLogInterface log) {
+        if (!(interval >= 0.0) || Double.isInfinite(interval)) {
+            throw new IllegalArgumentException("snapshotInterval must be finite and not negative, got " + interval);
+        }
+        this.world = simulation.getWorld();
+        this.scheduler = simulation.getScheduler();
+        this.renderer = new Renderer(world.getPlan());
+        this.file = file;
+        this.interval = interval;
+        this.log = log;
+        this.writer = new ThreadPoolExecutor(1, 1, 0L, TimeUnit.MILLISECONDS, new ArrayBlockingQueue<>(QUEUED_PICTURES),
+                r -> {
+                    Thread t = new Thread(r, "rp1-snapshot-writer");
+                    t.setDaemon(true);
+                    return t;
+                }, new ThreadPoolExecutor.CallerRunsPolicy());
+        if (interval > 0.0) {
+            world.addListener(this);
+        }
+    }
+
+    /** The file name of the picture at {@code simTime}: the time inserted before the extension. */
+    public static Path fileAt(Path file, double simTime) {
+        String name = file.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String stem = dot > 0 ? name.substring(0, dot) : name;
+        String extension = dot > 0 ? name.substring(dot) : "";
+        return file.resolveSibling(String.format(Locale.ROOT, "%s-%08.3f%s", stem, simTime, extension));
+    }
+
+    /** Arms the picture task at the next multiple of the interval, unless it is already on its way. */
+    @Override
+    public synchronized void worldChanged(World w, double simTime) {
+        changed = true;
+        if (armed || closed) {
+            return;
+        }
+        armed = true;
+        double now = Double.isNaN(simTime) ? scheduler.now() : simTime;
+        scheduler.schedule(Math.ceil(now / interval) * interval, Scheduler.HEARTBEAT, picture);
+    }
+
+    /** Scheduler thread: a picture if anything changed since the last one, and the next one queued. */
+    private synchronized void picture(double simTime) {
+        if (!changed || closed) {
+            armed = false;
+            return;
+        }
+        changed = false;
+        submit(WorldSnapshot.of(world, simTime), fileAt(file, simTime));
+        long index = Math.round(simTime / interval);
+        scheduler.schedule((index + 1) * interval, Scheduler.HEARTBEAT, picture);
+    }
+
+    private void submit(WorldSnapshot snapshot, Path target) {
+        writer.execute(() -> write(snapshot, target));
+    }
+
+    private void write(WorldSnapshot snapshot, Path target) {
+        try {
+            Pictures.writePng(Pictures.render(renderer, snapshot), target);
+        } catch (IOException | RuntimeException e) {
+            log.log("Could not write the picture " + target + ": " + e);
+        }
+    }
+
+    /**
+     * Writes the picture at exit and waits (up to a minute) until every picture is on disk. Call
+     * once the scheduler has stopped; the world is then read from the calling thread.
+     */
+    @Override
+    public void close() {
+        synchronized (this) {
+            if (closed) {
+                return;
+            }
+            closed = true;
+        }
+        world.removeListener(this);
+        scheduler.cancel(picture);
+        submit(WorldSnapshot.of(world, scheduler.getClock().getSimTime()), file);
+        writer.shutdown();
+        try {
+            if (!writer.awaitTermination(CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {
+                log.log("Pictures still being written after " + CLOSE_WAIT_SECONDS + " s; giving up on them");
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

@@ -1,0 +1,78 @@
+package rp1.view;
+
+import java.awt.BorderLayout;
+import java.awt.FlowLayout;
+
+import javax.swing.BorderFactory;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JTextField;
+
+import rp1.rossum.RsPoint;
+import rp1.rossum.RsUnits;
+import rp1.simulator.snapshot.WorldSnapshot;
+
+/**
+ * The panel below the canvas: a status line with the simulation time and the robots' poses, and
+ * the two read-only fields with the floor coordinates under the pointer (behavior.md section 10).
+ * Used on the event thread only.
+ */
+final class StatusPanel extends JPanel {
+    private static final long serialVersionUID = 1L;
+    private static final int READOUT_COLUMNS = 14;
+
+    private final JLabel state = new JLabel(" ");
+    private final JTextField x = readOnlyField();
+    private final JTextField y = readOnlyField();
+    private transient RsUnits units;
+    private transient WorldSnapshot shown;
+    private transient RsPoint pointer;
+
+    StatusPanel(DisplayUnits initial) {
+        super(new BorderLayout());
+        units = initial.units();
+        state.setBorder(BorderFactory.createEmptyBorder(2, 6, 2, 6));
+        JPanel readouts = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 2));
+        readouts.add(x);
+        readouts.add(y);
+        add(state, BorderLayout.NORTH);
+        add(readouts, BorderLayout.SOUTH);
+    }
+
+    private static JTextField readOnlyField() {
+        JTextField f = new JTextField(READOUT_COLUMNS);
+        f.setEditable(false);
+        return f;
+    }
+
+    /** Shows coordinates in {@code u} from now on. */
+    void setUnits(DisplayUnits u) {
+        units = u.units();
+        refresh();
+    }
+
+    /** Shows the time and poses of {@code s}. */
+    void showState(WorldSnapshot s) {
+        shown = s;
+        state.setText(StatusText.describe(s, units));
+    }
+
+    /** Shows the floor point under the pointer; null clears the fields. */
+    void showPointer(RsPoint p) {
+        pointer = p;
+        x.setText(p == null ? "" : StatusText.readout("x", p.x, units));
+        y.setText(p == null ? "" : StatusText.readout("y", p.y, units));
+    }
+
+    private void refresh() {
+        if (shown != null) {
+            showState(shown);
+        }
+        showPointer(pointer);
+    }
+
+    /** The status line's text. */
+    String stateText() {
+        return state.getText();
+    }
+}
