@@ -72,6 +72,11 @@ final class PlanCanvas extends JComponent {
         repaint();
     }
 
+    /** The snapshot shown. */
+    WorldSnapshot shown() {
+        return snapshot;
+    }
+
     /** How the world is mapped onto the canvas at its current size and zoom. */
     ViewTransform view() {
         ViewTransform fitted = ViewTransform.fit(renderer.getPlan().getBounds(), Math.max(1, getWidth()),
