@@ -1,7 +1,6 @@
 package rp1.view;
 
 import java.awt.Color;
-import java.awt.Dimension;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.event.MouseAdapter;
@@ -39,7 +38,6 @@ final class PlanCanvas extends JComponent {
         this.snapshot = first;
         setOpaque(true);
         setBackground(Color.white);
-        setPreferredSize(new Dimension(500, 360));
         MouseAdapter mouse = new MouseAdapter() {
             @Override
             public void mousePressed(MouseEvent e) {

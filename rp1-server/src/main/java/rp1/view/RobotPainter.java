@@ -2,6 +2,9 @@ package rp1.view;
 
 import java.awt.Color;
 import java.awt.Graphics2D;
+import java.awt.Polygon;
+import java.awt.Shape;
+import java.awt.geom.Ellipse2D;
 
 import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsBodyPart;
@@ -49,14 +52,7 @@ final class RobotPainter {
         int r = (int) Math.round(c.getRadius() * t.getScale());
         int x = (int) Math.round(centre.x) - r;
         int y = (int) Math.round(centre.y) - r;
-        if (fill != null) {
-            g.setColor(fill);
-            g.fillOval(x, y, 2 * r, 2 * r);
-        }
-        if (line != null) {
-            g.setColor(line);
-            g.drawOval(x, y, 2 * r, 2 * r);
-        }
+        fillAndOutline(g, new Ellipse2D.Double(x, y, 2 * r, 2 * r), fill, line);
     }
 
     private static void polygon(Graphics2D g, RsTransform t, double[] xy, Color fill, Color line) {
@@ -69,13 +65,18 @@ final class RobotPainter {
         for (int i = 0; i < n; i++) {
             t.iMapArrayIndex(xy[2 * i], xy[2 * i + 1], i, xs, ys);
         }
+        fillAndOutline(g, new Polygon(xs, ys, n), fill, line);
+    }
+
+    /** Fills {@code shape}, then outlines it; a null colour is not drawn. */
+    private static void fillAndOutline(Graphics2D g, Shape shape, Color fill, Color line) {
         if (fill != null) {
             g.setColor(fill);
-            g.fillPolygon(xs, ys, n);
+            g.fill(shape);
         }
         if (line != null) {
             g.setColor(line);
-            g.drawPolygon(xs, ys, n);
+            g.draw(shape);
         }
     }
 }

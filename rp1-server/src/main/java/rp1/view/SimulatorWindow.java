@@ -40,17 +40,15 @@ final class SimulatorWindow {
      */
     SimulatorWindow(Simulation simulation, double frameInterval, Runnable exit) {
         RsPlan plan = simulation.getWorld().getPlan();
+        // The frame first: if the toolkit fails, it fails here, before the simulation is observed.
+        frame = new JFrame(title(plan));
         publisher = new SnapshotPublisher(simulation);
         shown = publisher.poll();
         DisplayUnits units = DisplayUnits.of(plan.getUnits());
         status = new StatusPanel(units);
         canvas = new PlanCanvas(new Renderer(plan), shown, simulation, status::showPointer);
         status.showState(shown);
-        Runnable exitOnItsThread = () -> {
-            Thread t = new Thread(exit, "rp1-view-exit");
-            t.start();
-        };
-        frame = new JFrame(title(plan));
+        Runnable exitOnItsThread = () -> new Thread(exit, "rp1-view-exit").start();
         frame.setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
             @Override

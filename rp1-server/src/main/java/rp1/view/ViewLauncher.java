@@ -41,9 +41,8 @@ public final class ViewLauncher {
         SnapshotWriter writer = null;
         if (config.snapshotFileName != null) {
             writer = new SnapshotWriter(simulation, Paths.get(config.snapshotFileName), config.snapshotInterval, log);
-            log.log("Writing pictures of the world to " + config.snapshotFileName
-                    + (config.snapshotInterval > 0.0 ? " (and every " + config.snapshotInterval + " s of simulated time)" : "")
-                    + " at exit");
+            log.log("Pictures of the world go to " + config.snapshotFileName + " at exit"
+                    + (config.snapshotInterval > 0.0 ? ", and every " + config.snapshotInterval + " s of simulated time" : ""));
         }
         return new RunningView(window, writer);
     }
