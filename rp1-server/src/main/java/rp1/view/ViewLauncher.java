@@ -34,15 +34,18 @@ public final class ViewLauncher {
      */
     public static RunningView start(Simulation simulation, ServerConfig config, RsLogInterface log,
                                     Runnable exitCallback) {
-        SimulatorWindow window = config.enableGUI ? openWindow(simulation, config.frameInterval, log, exitCallback) : null;
-        if (!config.enableGUI) {
+        SimulatorWindow window = null;
+        if (config.enableGUI) {
+            window = openWindow(simulation, config.frameInterval, log, exitCallback);
+        } else {
             log.log("GUI is disabled (in response to configuration option)");
         }
         SnapshotWriter writer = null;
         if (config.snapshotFileName != null) {
             writer = new SnapshotWriter(simulation, Paths.get(config.snapshotFileName), config.snapshotInterval, log);
-            log.log("Pictures of the world go to " + config.snapshotFileName + " at exit"
-                    + (config.snapshotInterval > 0.0 ? ", and every " + config.snapshotInterval + " s of simulated time" : ""));
+            log.log("Writing a picture of the world to " + config.snapshotFileName + " at exit"
+                    + (config.snapshotInterval > 0.0 ? ", and one every " + config.snapshotInterval
+                    + " s of simulated time while the world changes" : ""));
         }
         return new RunningView(window, writer);
     }
