@@ -120,12 +120,19 @@ public final class DemoRun implements AutoCloseable {
 
     /** The simulation's log: collects lines, each with the simulated time it was written at. */
     private final class CapturedLog implements RsLogInterface {
+        /** -Drp1.demo.echo=true prints the demos' log lines as they come, for watching a test run. */
+        private static final boolean ECHO = Boolean.getBoolean("rp1.demo.echo");
+
         private final StringBuilder lines = new StringBuilder();
 
         @Override
         public synchronized void logIt(String level, String message) {
             double t = simulation == null ? 0.0 : simulation.getSimTime();
-            lines.append(String.format(Locale.ROOT, "%s %9.3f %s%n", level, t, message));
+            String line = String.format(Locale.ROOT, "%s %9.3f %s%n", level, t, message);
+            lines.append(line);
+            if (ECHO) {
+                System.out.print(line);
+            }
         }
 
         @Override

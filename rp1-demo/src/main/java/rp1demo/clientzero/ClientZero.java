@@ -4,6 +4,7 @@ import java.awt.Color;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsBodyCircle;
+import rp1.rossum.RsBodyPainter;
 import rp1.rossum.RsBodySensor;
 import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.RsDifferentialSteering;
@@ -20,6 +21,8 @@ public final class ClientZero {
     public static final double HEAD_X = 0.16;
     /** How far the head sees, metres. */
     public static final double HEAD_RANGE = 1.0;
+    /** Name of the painter part of {@link #buildWithPainter}. */
+    public static final String PEN = "pen";
 
     private ClientZero() {
     }
@@ -56,6 +59,22 @@ public final class ClientZero {
         body.addPart(head);
 
         body.addPart(wheelSystem);
+        return body;
+    }
+
+    /**
+     * ClientZero with a painter named {@value #PEN} under its axle centre that, once activated,
+     * leaves a 1 cm trail of {@code trailColor} behind the robot: the demos that drive on their own
+     * use it to show where they went.
+     */
+    public static RsBody buildWithPainter(Color trailColor) {
+        RsBody body = build();
+        RsBodyPainter pen = new RsBodyPainter(new double[] {-0.01, -0.01, 0.01, -0.01, 0.01, 0.01, -0.01, 0.01}, 4);
+        pen.setName(PEN);
+        pen.setTrailerPosition(0.0, 0.0);
+        pen.setTrailerWidth(0.01);
+        pen.setPaintColor(trailColor);
+        body.addPart(pen);
         return body;
     }
 }
