@@ -3,17 +3,18 @@ package rp1demo;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.nio.file.Paths;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Locale;
 import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsBody;
 import rp1.rossum.RsClient;
 import rp1.rossum.RsLogInterface;
+import rp1.rossum.RsPlan;
 import rp1.rossum.RsRunnable;
+import rp1.rossum.RsTransform;
 import rp1.simulator.InProcessClient;
 import rp1.simulator.Simulation;
 import rp1.simulator.SimulationSettings;
@@ -33,7 +34,6 @@ public final class DemoRun implements AutoCloseable {
     private final InProcessClient link;
     private final CapturedLog log = new CapturedLog();
     private final EventRecorder recorder = new EventRecorder();
-    private final List<Thread> threads = new ArrayList<>();
 
     private DemoRun(String planFile, RsRunnable demo, RsClient client, BodySource body) throws Exception {
         simulation = new Simulation(plan(planFile), SimulationSettings.lockstep(STEP, 1L), log);
@@ -61,20 +61,16 @@ public final class DemoRun implements AutoCloseable {
         return new DemoRun(planFile, demo, client, body);
     }
 
-    private static rp1.rossum.RsPlan plan(String file) throws IOException, RsParsingException {
+    /** A shipped floor plan; the build gives the repository root as rp1.root, else it is the parent directory. */
+    private static RsPlan plan(String file) throws IOException, RsParsingException {
         Path root = Paths.get(System.getProperty("rp1.root", ".."));
-        Path p = root.resolve("FloorPlans").resolve(file);
-        if (!p.toFile().exists()) {
-            p = Paths.get("..").resolve("FloorPlans").resolve(file);
-        }
-        return RsPlanParser.parseFile(p);
+        return RsPlanParser.parseFile(root.resolve("FloorPlans").resolve(file));
     }
 
     private void start(Runnable r, String name) {
         Thread t = new Thread(r, name);
         t.setDaemon(true);
         t.start();
-        threads.add(t);
     }
 
     public Simulation simulation() {
@@ -88,6 +84,18 @@ public final class DemoRun implements AutoCloseable {
     /** The demo's robot in the simulated world. */
     public Robot robot() {
         return simulation.getWorld().getRobots().get(0);
+    }
+
+    /**
+     * Calls {@code watcher} with the robot's pose at every change of the world while the robot is
+     * on the floor (on the simulation's thread: at each motion step, among others).
+     */
+    public void watchRobot(Consumer<RsTransform> watcher) {
+        simulation.getWorld().addListener((world, t) -> {
+            if (!world.getRobots().isEmpty() && world.getRobots().get(0).isPlaced()) {
+                watcher.accept(world.getRobots().get(0).pose());
+            }
+        });
     }
 
     /** Simulated seconds so far. */

@@ -37,11 +37,7 @@ class AckermanTest {
         Main c = new Main();
         try (DemoRun run = DemoRun.start("ackerman.txt", c, c, c::getBody)) {
             Extent extent = new Extent();
-            run.simulation().getWorld().addListener((world, t) -> {
-                if (!world.getRobots().isEmpty() && world.getRobots().get(0).isPlaced()) {
-                    extent.sample(world.getRobots().get(0).pose().getOffset());
-                }
-            });
+            run.watchRobot(pose -> extent.sample(pose.getOffset()));
             RsMotionHaltedEvent parked = run.events().await(RsMotionHaltedEvent.class, e -> true, 30);
 
             assertEquals(RsMotionHaltedEvent.HALTED_ON_REQUEST, parked.causeOfHalt, "stopped by the driver; log:\n" + run.logText());

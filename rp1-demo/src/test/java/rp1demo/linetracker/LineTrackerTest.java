@@ -64,11 +64,7 @@ class LineTrackerTest {
         LtMain c = new LtMain();
         try (DemoRun run = DemoRun.start("linetrack.txt", c, c, c::getBody)) {
             Lap lap = new Lap();
-            run.simulation().getWorld().addListener((world, t) -> {
-                if (!world.getRobots().isEmpty() && world.getRobots().get(0).isPlaced()) {
-                    lap.sample(world.getRobots().get(0).pose());
-                }
-            });
+            run.watchRobot(lap::sample);
             run.waitUntil(() -> lap.swept() > 2.0 * Math.PI + 0.2, 30, "a full lap");
             run.simulation().shutdown();
 
