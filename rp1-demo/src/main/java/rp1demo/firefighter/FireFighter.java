@@ -133,6 +133,7 @@ public final class FireFighter {
     /** In a room: a candle already in view is approached at once, else the robot turns a full circle. */
     private void lookAround(Pose pose) {
         if (inSight != null && pose.distanceTo(inSight.x(), inSight.y()) <= reach) {
+            report.accept("Candle " + inSight.name() + " in view");
             approach(pose, inSight);
             return;
         }
