@@ -39,8 +39,9 @@ public final class DemoRun implements AutoCloseable {
         simulation = new Simulation(plan(planFile), SimulationSettings.lockstep(STEP, 1L), log);
         start(simulation::runPaused, "simulation");
         link = new InProcessClient(simulation, demo, demo.getClass().getSimpleName(), true);
+        recorder.attachFirst(client);
         demo.initialize();
-        recorder.attach(client, body.body());
+        recorder.attachSensors(client, body.body());
         if (!link.awaitDrained(10_000)) {
             throw new AssertionError("the demo's first requests were not read within 10 s");
         }

@@ -13,20 +13,28 @@ import rp1.rossum.RsClient;
 import rp1.rossum.event.RsEvent;
 
 /**
- * Records the events a demo's client receives, in order, by adding handlers after the demo's own
- * (so they see each event after the demo has reacted to it), and lets a test wait for one.
+ * Records the events a demo's client receives, in order, by adding handlers of its own to the
+ * demo's client, and lets a test wait for one.
  */
 public final class EventRecorder {
     private final List<RsEvent> events = new ArrayList<>();
 
-    /** Registers recording handlers on {@code client} for the events a test looks at. */
-    void attach(RsClient client, RsBody body) {
+    /**
+     * Registers recording handlers for the events that concern the whole robot. Called before the
+     * demo initializes, so these run before the demo's own: once the demo has reacted to an event
+     * (say, by declaring itself done), the event is already recorded.
+     */
+    void attachFirst(RsClient client) {
         client.addMotionStartedEventHandler(this::record);
         client.addMotionHaltedEventHandler(this::record);
         client.addPlacementEventHandler(this::record);
         client.addPositionEventHandler(this::record);
         client.addMouseClickEventHandler(this::record);
         client.addTimeoutEventHandler(this::record);
+    }
+
+    /** Registers recording handlers for the body's target and paint sensors (once the demo has made its body). */
+    void attachSensors(RsClient client, RsBody body) {
         for (RsBodyPart p : body.getBodyPartArray()) {
             if (p instanceof RsBodyTargetSensor t) {
                 client.addTargetSensorEventHandler(t, this::record);
