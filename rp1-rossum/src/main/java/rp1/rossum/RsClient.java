@@ -95,13 +95,18 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         initialize();
     }
 
+    /**
+     * The library defaults, then {@code rossum.ini} from the working directory or, if there is none,
+     * from next to this object's class. Having neither is normal (the defaults serve); a file that
+     * exists but is invalid is reported on standard error and the defaults stay.
+     */
     private RsProperties loadClientProperties() {
         RsProperties p = new RsProperties();
         try {
             if (Files.isRegularFile(Paths.get(RsProperties.FILE_NAME))) {
                 p.loadFromFile(RsProperties.FILE_NAME);
                 System.err.println("RsClient properties loaded from local file " + RsProperties.FILE_NAME);
-            } else {
+            } else if (getClass().getResource(RsProperties.FILE_NAME) != null) {
                 p.loadFromResource(this, RsProperties.FILE_NAME);
             }
         } catch (RsPropertiesException e) {
