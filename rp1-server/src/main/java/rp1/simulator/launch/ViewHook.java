@@ -1,0 +1,48 @@
+package rp1.simulator.launch;
+
+import rp1.rossum.RsLogInterface;
+import rp1.simulator.Simulation;
+import rp1.simulator.config.ServerConfig;
+
+/**
+ * Where a view plugs into the server: called once at start-up when {@code enableGUI=true}. The view
+ * observes the simulation (its world's listeners, mouse clicks, "remove paint trails") and never
+ * drives it otherwise; the simulation does not know it exists.
+ */
+@FunctionalInterface
+public interface ViewHook {
+    /**
+     * Opens the view.
+     *
+     * @return what to close when the server stops
+     * @throws Exception if the view cannot be shown; the server then stops with a log line
+     */
+    AutoCloseable open(Context context) throws Exception;
+
+    /** What a view gets to work with. */
+    final class Context {
+        public final Simulation simulation;
+        public final ServerConfig config;
+        public final RsLogInterface log;
+        /** Stops the server with status 0 (the view's File / Exit and window close). */
+        public final Runnable exit;
+
+        public Context(Simulation simulation, ServerConfig config, RsLogInterface log, Runnable exit) {
+            this.simulation = simulation;
+            this.config = config;
+            this.log = log;
+            this.exit = exit;
+        }
+    }
+
+    /** No view: the server runs headless and says so. */
+    ViewHook HEADLESS = context -> {
+        context.log.log("GUI not available in this build; running headless");
+        return () -> { };
+    };
+
+    /** The view the server uses when none is given in its {@link LaunchOptions}. */
+    static ViewHook standard() {
+        return HEADLESS;
+    }
+}
