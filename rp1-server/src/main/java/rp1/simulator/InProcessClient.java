@@ -2,7 +2,7 @@ package rp1.simulator;
 
 import java.io.IOException;
 import java.io.OutputStream;
-import java.util.function.UnaryOperator;
+import java.util.function.Function;
 
 import rp1.rossum.RsConnection;
 import rp1.rossum.RsPipe;
@@ -28,19 +28,19 @@ public final class InProcessClient {
      * {@code setLogger} with the simulation's log.
      */
     public InProcessClient(Simulation simulation, RsRunnable client, String description, boolean shareLog) {
-        this(simulation, client, description, shareLog, new RsConnection(), UnaryOperator.identity());
+        this(simulation, client, description, shareLog, new RsConnection(), RsPipe::getOutputStream);
     }
 
     /**
      * Connects {@code client} as above, with {@code connection} as the server's end, which writes to
-     * the client through {@code outbound} applied to the pipe (the server puts a bounded queue there so
-     * that a client that stops reading cannot hold up the simulation).
+     * the client through the stream {@code outbound} makes of the pipe to the client (the server puts a
+     * bounded queue there so that a client that stops reading cannot hold up the simulation).
      */
     public InProcessClient(Simulation simulation, RsRunnable client, String description, boolean shareLog,
-                           RsConnection connection, UnaryOperator<OutputStream> outbound) {
+                           RsConnection connection, Function<RsPipe, OutputStream> outbound) {
         this.client = client;
         this.connection = connection;
-        connection.setInputOutputStreams(toServer.getInputStream(), outbound.apply(toClient.getOutputStream()));
+        connection.setInputOutputStreams(toServer.getInputStream(), outbound.apply(toClient));
         session = simulation.attach(connection, description);
         Thread reader = new Thread(connection, "connection " + description);
         reader.setDaemon(true);

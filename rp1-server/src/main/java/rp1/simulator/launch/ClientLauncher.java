@@ -16,6 +16,7 @@ import rp1.simulator.config.ServerConfig;
 import rp1.simulator.net.ClientConnection;
 import rp1.simulator.net.ClientRegistry;
 import rp1.simulator.net.OutboundQueue;
+import rp1.simulator.net.Transport;
 
 /**
  * Launches the dynamically loaded clients named in {@code dlcName} (behavior.md section 3.4; several
@@ -98,7 +99,8 @@ final class ClientLauncher implements LoadedClient.Listener {
         ClientConnection connection = new ClientConnection(description);
         registry.add(connection);
         InProcessClient link = new InProcessClient(simulation, c.client, description, config.dlcSetLog, connection,
-                pipe -> OutboundQueue.start(pipe, config.clientQueueLimit, "writer " + description, connection::close));
+                pipe -> OutboundQueue.start(Transport.of(pipe), config.clientQueueLimit, "writer " + description,
+                        connection::close));
         c.setLink(link);
         log.log(description + " connected");
     }

@@ -65,19 +65,24 @@ public final class ServerLog implements RsLogInterface {
                 level, wallClock.format(WALL_CLOCK), millis / 1000, millis % 1000, message);
     }
 
+    /**
+     * Writes a line. The simulation time is read before the log's lock is taken (it needs the
+     * scheduler's); the wall clock after, so that lines appear in wall-clock order.
+     */
     @Override
     public void logIt(String level, String message) {
-        String line = format(level, LocalTime.now(), simTime.getAsDouble(), message);
-        boolean important = "X".equals(level);
-        write(line, important);
+        double t = simTime.getAsDouble();
+        synchronized (this) {
+            write(format(level, LocalTime.now(), t, message), "X".equals(level));
+        }
     }
 
     /** Writes a line exactly as given (the memory figures at shutdown have no level or time). */
-    public void raw(String line) {
+    public synchronized void raw(String line) {
         write(line, false);
     }
 
-    private synchronized void write(String line, boolean important) {
+    private void write(String line, boolean important) {
         if (closed) {
             return;
         }

@@ -3,9 +3,10 @@ package rp1.simulator.net;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
 import java.net.SocketTimeoutException;
+import java.net.StandardSocketOptions;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
@@ -16,9 +17,12 @@ import rp1.simulator.Simulation;
  * limit, attaches the client to the simulation and then reads its requests. A client that connects
  * and stays silent, or breaks the handshake, is dropped with a log line and holds up nobody (RP1 0.60
  * did the handshake on its one accepting thread, so a silent peer blocked every later client).
+ *
+ * <p>Sockets are non-blocking channels with Nagle's algorithm off: events go out at once from the
+ * thread that sends them while the client keeps up, and through its {@link OutboundQueue} when not.
  */
 public final class ClientListener {
-    private final ServerSocket serverSocket;
+    private final ServerSocketChannel serverSocket;
     private final Simulation simulation;
     private final ClientRegistry clients;
     private final RsLogInterface log;
@@ -26,7 +30,7 @@ public final class ClientListener {
     private final int queueLimit;
     private volatile boolean closed;
 
-    private ClientListener(ServerSocket serverSocket, Simulation simulation, ClientRegistry clients,
+    private ClientListener(ServerSocketChannel serverSocket, Simulation simulation, ClientRegistry clients,
                            RsLogInterface log, int connectTimeoutMillis, int queueLimit) {
         this.serverSocket = serverSocket;
         this.simulation = simulation;
@@ -59,7 +63,7 @@ public final class ClientListener {
      */
     public static ClientListener bind(String bindAddress, int port, Simulation simulation, ClientRegistry clients,
                                       RsLogInterface log, Settings settings) throws IOException {
-        ServerSocket s = new ServerSocket();
+        ServerSocketChannel s = ServerSocketChannel.open();
         try {
             s.bind(new InetSocketAddress(InetAddress.getByName(bindAddress), port));
         } catch (IOException e) {
@@ -72,7 +76,7 @@ public final class ClientListener {
 
     /** The port clients connect to. */
     public int getPort() {
-        return serverSocket.getLocalPort();
+        return serverSocket.socket().getLocalPort();
     }
 
     /** Starts the listener thread. */
@@ -83,11 +87,13 @@ public final class ClientListener {
     }
 
     private void acceptLoop() {
-        log.log("Now accepting connections on " + serverSocket.getLocalSocketAddress());
+        log.log("Now accepting connections on " + serverSocket.socket().getLocalSocketAddress());
         while (!closed) {
-            Socket socket;
+            SocketChannel channel;
+            String address;
             try {
-                socket = serverSocket.accept();
+                channel = serverSocket.accept();
+                address = String.valueOf(channel.getRemoteAddress());
             } catch (IOException e) {
                 if (!closed) {
                     log.logIt("X", "The listener failed, no more network clients: " + e.getMessage());
@@ -95,32 +101,35 @@ public final class ClientListener {
                 return;
             }
             int n = clients.nextNumber();
-            String description = "client " + n + " (" + socket.getRemoteSocketAddress() + ")";
-            Thread t = new Thread(() -> serve(socket, description), "client " + n);
+            String description = "client " + n + " (" + address + ")";
+            Thread t = new Thread(() -> serve(channel, description), "client " + n);
             t.setDaemon(true);
             t.start();
         }
     }
 
     /** The thread of one network client: handshake, then its requests until it leaves. */
-    private void serve(Socket socket, String description) {
+    private void serve(SocketChannel channel, String description) {
         ClientConnection c = new ClientConnection(description);
         if (!clients.add(c)) {
-            closeQuietly(socket);
+            closeQuietly(channel);
             return;
         }
         try {
-            socket.setTcpNoDelay(true);
-            socket.setSoTimeout(connectTimeoutMillis);
-            OutboundQueue out = OutboundQueue.start(socket.getOutputStream(), queueLimit, "writer " + description, c::close);
-            c.setInputOutputStreams(socket.getInputStream(), out);
+            channel.configureBlocking(false);
+            channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
+            ChannelInput in = new ChannelInput(channel);
+            in.setTimeout(connectTimeoutMillis);
+            OutboundQueue out = OutboundQueue.start(new ChannelTransport(channel), queueLimit, "writer " + description,
+                    c::close);
+            c.setInputOutputStreams(in, out);
             c.exchangeIntroductions();
-            socket.setSoTimeout(0);
+            in.setTimeout(0);
         } catch (SocketTimeoutException e) {
-            handshakeFailed(socket, c, "no CONNECT within " + connectTimeoutMillis + " ms (connectTimeout)");
+            handshakeFailed(channel, c, "no CONNECT within " + connectTimeoutMillis + " ms (connectTimeout)");
             return;
         } catch (IOException e) {
-            handshakeFailed(socket, c, e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
+            handshakeFailed(channel, c, e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
             return;
         }
         simulation.attach(c, description);
@@ -128,10 +137,10 @@ public final class ClientListener {
         c.run();
     }
 
-    private void handshakeFailed(Socket socket, ClientConnection c, String reason) {
+    private void handshakeFailed(SocketChannel channel, ClientConnection c, String reason) {
         log.log(c.getDescription() + ": handshake failed: " + reason);
         c.close("handshake failed");
-        closeQuietly(socket);
+        closeQuietly(channel);
     }
 
     /** Stops accepting; connections already made stay open. */

@@ -6,7 +6,9 @@ import java.util.List;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsBodyPainter;
+import rp1.rossum.RsBodyRangeSensor;
 import rp1.rossum.RsBodySensor;
+import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.RsMotion;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsTransform;
@@ -32,6 +34,8 @@ public final class Robot {
     private final EventSink events;
     private final RsBody body;
     private final RobotShapes shapes;
+    /** How far from the body origin the range and target sensors can see anything, metres. */
+    private final double sensorReach;
     private final String label;
     private final List<PaintTrail> trails;
     private volatile boolean placed;
@@ -44,6 +48,7 @@ public final class Robot {
         this.body = body;
         this.events = events;
         this.shapes = new RobotShapes(body);
+        this.sensorReach = sensorReach(body);
         String name = body.getName();
         this.label = name == null || name.isEmpty() ? "robot " + number : name;
         List<PaintTrail> t = new ArrayList<>();
@@ -51,6 +56,31 @@ public final class Robot {
             t.add(new PaintTrail(p));
         }
         trails = Collections.unmodifiableList(t);
+    }
+
+    private static double sensorReach(RsBody body) {
+        double reach = 0.0;
+        for (RsBodySensor s : body.getBodySensorArray()) {
+            if (s instanceof RsBodyRangeSensor) {
+                RsBodyRangeSensor r = (RsBodyRangeSensor) s;
+                reach = Math.max(reach, Math.hypot(r.getXDetector(), r.getYDetector()) + r.getMaxRange());
+            } else if (s instanceof RsBodyTargetSensor) {
+                RsBodyTargetSensor t = (RsBodyTargetSensor) s;
+                reach = Math.max(reach, Math.hypot(t.getXDetector(), t.getYDetector()) + t.getMaxRange());
+            }
+        }
+        return reach;
+    }
+
+    /**
+     * Whether this robot's range or target sensors could see {@code other} (or be blocked by it) at
+     * their current poses: nothing of it is nearer than the sensors' reach.
+     */
+    boolean canSee(Robot other) {
+        RsTransform a = pose();
+        RsTransform b = other.pose();
+        double d = Math.hypot(a.m13 - b.m13, a.m23 - b.m23);
+        return d <= sensorReach + other.shapes.reach() + 1.0e-9;
     }
 
     /** The order in which the robot joined the world, from 1. */

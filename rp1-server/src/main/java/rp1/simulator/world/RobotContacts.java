@@ -36,11 +36,18 @@ final class RobotContacts {
     /** Searches [from, to] for contacts between moving robots and every other placed robot. */
     static void resolve(List<Robot> placed, double from, double to) {
         int n = placed.size();
+        // Each robot's swept box once, not once per pair: the pair test is then a box overlap.
+        RsRectangle[] boxes = new RsRectangle[n];
+        for (int i = 0; i < n; i++) {
+            Robot r = placed.get(i);
+            boxes[i] = r.shapes().isEmpty() ? null : swept(r, from, to);
+        }
         for (int i = 0; i < n; i++) {
             Robot a = placed.get(i);
             for (int j = i + 1; j < n; j++) {
                 Robot b = placed.get(j);
-                if ((a.isMoving() || b.isMoving()) && !a.shapes().isEmpty() && !b.shapes().isEmpty()) {
+                if ((a.isMoving() || b.isMoving()) && boxes[i] != null && boxes[j] != null
+                        && boxes[i].intersects(boxes[j])) {
                     resolvePair(a, b, from, to);
                 }
             }
@@ -49,7 +56,7 @@ final class RobotContacts {
 
     private static void resolvePair(Robot a, Robot b, double from, double to) {
         double speed = speedBound(a) + speedBound(b);
-        if (speed <= 0.0 || !sweptBoundsMeet(a, b, from, to)) {
+        if (speed <= 0.0) {
             return;
         }
         double step = SAMPLE_SPACING / speed;
@@ -99,10 +106,6 @@ final class RobotContacts {
             return 0.0;
         }
         return Math.abs(m.getVelocity()) + Math.abs(m.getTurnRate()) * r.shapes().reach();
-    }
-
-    private static boolean sweptBoundsMeet(Robot a, Robot b, double from, double to) {
-        return swept(a, from, to).intersects(swept(b, from, to));
     }
 
     private static RsRectangle swept(Robot r, double from, double to) {

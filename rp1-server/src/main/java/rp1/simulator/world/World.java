@@ -194,7 +194,18 @@ public final class World {
      * if the robot has a sensor that walls affect.
      */
     RsWall[] obstaclesFor(Robot r, List<Robot> placed) {
-        return hasWallSensor(r) && placed.size() > 1 ? withRobots(r, placed) : walls;
+        if (!hasWallSensor(r) || placed.size() < 2) {
+            return walls;
+        }
+        // Only robots within the sensors' reach can change a reading; with many robots, looking at
+        // all of them from every robot at every step made the world quadratic.
+        List<Robot> seen = new ArrayList<>();
+        for (Robot o : placed) {
+            if (o != r && r.canSee(o)) {
+                seen.add(o);
+            }
+        }
+        return seen.isEmpty() ? walls : withRobots(r, seen);
     }
 
     private static boolean hasWallSensor(Robot r) {

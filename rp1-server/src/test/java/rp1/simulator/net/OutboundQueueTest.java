@@ -26,7 +26,7 @@ class OutboundQueueTest {
     @Test
     void everyFlushIsOneMessageDeliveredInOrder() throws Exception {
         RsPipe pipe = new RsPipe();
-        OutboundQueue q = OutboundQueue.start(pipe.getOutputStream(), 100, "writer test", failures::add);
+        OutboundQueue q = OutboundQueue.start(Transport.of(pipe), 100, "writer test", failures::add);
         for (int i = 0; i < 50; i++) {
             q.write(new byte[] {0, 0, 0, (byte) i});
             q.flush();
@@ -42,9 +42,19 @@ class OutboundQueueTest {
     }
 
     @Test
+    void aMessageThatFitsIsWrittenByTheSenderItself() throws Exception {
+        RsPipe pipe = new RsPipe();
+        OutboundQueue q = OutboundQueue.start(Transport.of(pipe), 16, "writer test", failures::add);
+        q.write(new byte[] {1, 2, 3, 4, 5});
+        q.flush();
+        assertEquals(5, pipe.getInputStream().available(), "in the pipe when flush returns, no thread hop");
+        assertEquals(0, q.getWaiting());
+    }
+
+    @Test
     void aReaderThatStopsReadingIsCutOffAtTheLimitWithoutBlockingTheSender() throws Exception {
         RsPipe nobodyReads = new RsPipe(64);
-        OutboundQueue q = OutboundQueue.start(nobodyReads.getOutputStream(), 16, "writer test", failures::add);
+        OutboundQueue q = OutboundQueue.start(Transport.of(nobodyReads), 16, "writer test", failures::add);
         byte[] message = new byte[40];
         long start = System.nanoTime();
         IOException cutOff = assertThrows(IOException.class, () -> {
@@ -68,7 +78,7 @@ class OutboundQueueTest {
                 throw new IOException("connection reset");
             }
         };
-        OutboundQueue q = OutboundQueue.start(broken, 16, "writer test", failures::add);
+        OutboundQueue q = OutboundQueue.start(Transport.of(broken), 16, "writer test", failures::add);
         q.write(1);
         q.flush();
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
@@ -82,7 +92,7 @@ class OutboundQueueTest {
     @Test
     void bytesWrittenBeforeAFlushStayTogether() throws Exception {
         ByteArrayOutputStream sink = new ByteArrayOutputStream();
-        OutboundQueue q = OutboundQueue.start(sink, 16, "writer test", failures::add);
+        OutboundQueue q = OutboundQueue.start(Transport.of(sink), 16, "writer test", failures::add);
         q.write(new byte[] {1, 2});
         q.write(3);
         Thread.sleep(20);
