@@ -10,7 +10,7 @@ import rp1.simulator.launch.RunningServer;
 import rp1.simulator.launch.ServerLauncher;
 import rp1.simulator.launch.StartupException;
 
-/** Servers for the benchmarks: headless, silent, on a free port, from properties written to a temp dir. */
+/** Servers for the benchmarks: headless, on a free port, logging to a temporary directory. */
 final class BenchServer {
     private BenchServer() {
     }
@@ -19,8 +19,10 @@ final class BenchServer {
     static RunningServer start(String... lines) throws IOException, StartupException {
         Path dir = Files.createTempDirectory("rp1-bench");
         dir.toFile().deleteOnExit();
-        StringBuilder props = new StringBuilder("enableGUI=false\nlogToFile=false\nlogToSystemOut=false\n"
-                + "floorPlanFileName=WhiteRoom.txt\nrandomSeed=1\n");
+        Path log = dir.resolve("bench.log");
+        log.toFile().deleteOnExit();
+        StringBuilder props = new StringBuilder("enableGUI=false\nlogToFile=true\nlogFileName=bench.log\n"
+                + "logToSystemOut=false\nfloorPlanFileName=WhiteRoom.txt\nrandomSeed=1\n");
         for (String line : lines) {
             props.append(line).append('\n');
         }

@@ -21,21 +21,28 @@ final class Connecting {
         RsProperties p = new RsProperties();
         p.hostName = "127.0.0.1";
         p.port = port;
-        List<RsClient> clients = new ArrayList<>();
+        List<Joiner> clients = new ArrayList<>();
         long start = System.nanoTime();
         for (int i = 0; i < count; i++) {
             clients.add(joinAndPlace(p, i));
         }
         double millis = (System.nanoTime() - start) * 1e-6;
-        for (RsClient c : clients) {
-            c.setInputOutputStreams(null, null);
+        for (Joiner c : clients) {
+            c.leave();
         }
         return millis;
     }
 
-    private static RsClient joinAndPlace(RsProperties p, int i) throws IOException, InterruptedException {
+    /** A client that can end its session. */
+    private static final class Joiner extends RsClient {
+        void leave() {
+            shutdown();
+        }
+    }
+
+    private static Joiner joinAndPlace(RsProperties p, int i) throws IOException, InterruptedException {
         CountDownLatch placed = new CountDownLatch(1);
-        RsClient c = new RsClient();
+        Joiner c = new Joiner();
         c.setLogger(null);
         c.initialize(p);
         RsBody body = new RsBody("joiner " + i);

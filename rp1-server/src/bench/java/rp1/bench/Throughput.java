@@ -40,7 +40,7 @@ final class Throughput {
             Runtime rt = Runtime.getRuntime();
             long heap = rt.totalMemory() - rt.freeMemory();
             System.out.printf(Locale.ROOT,
-                    "%4d robots (%d placed): %,10.0f simulated s per wall s, %,9.0f events/s, heap used %,d MB%n",
+                    "%4d robots (%d placed): %,10.2f simulated s per wall s, %,9.0f events/s, heap used %,d MB%n",
                     robots, Wanderer.PLACED.get(), simulated / wall, events / wall, heap >> 20);
         } finally {
             server.stop();

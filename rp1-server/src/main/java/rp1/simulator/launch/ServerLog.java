@@ -17,8 +17,9 @@ import rp1.rossum.RsLogInterface;
  * 10000 s. Lines go to a file (flushed per line, so a crash loses nothing) and/or standard output.
  * Levels: "X" important, "s" standard, "v" verbose (written only when verbosity is on).
  *
- * <p>When neither target is on, "X" lines still go to standard error: a server that stops because a
- * client failed must say why somewhere. Loaded clients log into this log too ({@code dlcSetLog}).
+ * <p>When neither target is on, the server's own important lines ({@link #important}) still go to
+ * standard error: a server that stops because a client failed must say why somewhere. Loaded clients
+ * log into this log too ({@code dlcSetLog}).
  */
 public final class ServerLog implements RsLogInterface {
     private static final DateTimeFormatter WALL_CLOCK = DateTimeFormatter.ofPattern("h:mm:ss.SSS", Locale.ROOT);
@@ -71,9 +72,13 @@ public final class ServerLog implements RsLogInterface {
      */
     @Override
     public void logIt(String level, String message) {
+        line(level, message, false);
+    }
+
+    private void line(String level, String message, boolean important) {
         double t = simTime.getAsDouble();
         synchronized (this) {
-            write(format(level, LocalTime.now(), t, message), "X".equals(level));
+            write(format(level, LocalTime.now(), t, message), important);
         }
     }
 
@@ -102,9 +107,9 @@ public final class ServerLog implements RsLogInterface {
         logIt("s", message);
     }
 
-    /** Writes an important ("X") line. */
+    /** Writes one of the server's important ("X") lines; on standard error if there is no other target. */
     public void important(String message) {
-        logIt("X", message);
+        line("X", message, true);
     }
 
     @Override
