@@ -25,6 +25,11 @@ public final class ClientConnection extends RsConnection {
         return description;
     }
 
+    /** The client id and key the handshake gave the session (both 0 in-process and for RP1 0.60's clients). */
+    public String getIdentity() {
+        return "client id " + clientID + ", key " + clientKey;
+    }
+
     /** Runs {@code listener} once, after the session has ended (on the thread that ended it). */
     public void setEndListener(Runnable listener) {
         endListener = listener;

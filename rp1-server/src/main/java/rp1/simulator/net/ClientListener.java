@@ -133,7 +133,7 @@ public final class ClientListener {
             return;
         }
         simulation.attach(c, description);
-        log.log(description + " connected");
+        log.log(description + " connected (" + c.getIdentity() + ")");
         c.run();
     }
 

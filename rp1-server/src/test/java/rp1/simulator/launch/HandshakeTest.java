@@ -41,6 +41,7 @@ class HandshakeTest {
             int[] header = c.readHeader();
             assertArrayEquals(new int[] {0, 7, 9, 2, RawClient.EVENT}, header, "the first event after ACCEPT (1)");
             assertEquals(RawClient.EVT_TIMEOUT, c.in.readInt());
+            TestServer.awaitLog(dir, "client 1 (/127.0.0.1:" + c.socket.getLocalPort() + ") connected (client id 7, key 9)");
         }
     }
 

@@ -47,7 +47,7 @@ class ManyClientsTest {
                 assertEquals(TestServer.placementY(i), halted.y, 1e-9);
             }
             String log = TestServer.log(dir);
-            assertEquals(CLIENTS, log.split(" connected\n", -1).length - 1, "one line per connection");
+            assertEquals(CLIENTS, log.split(" connected \\(client id 0, key 0\\)\n", -1).length - 1, "one line per connection");
         } finally {
             pool.shutdownNow();
             assertEquals(ExitStatus.OK, server.stop());
