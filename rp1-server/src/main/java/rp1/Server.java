@@ -12,6 +12,7 @@ public final class Server {
     private Server() {
     }
 
+    /** Runs the server; the process exits with its status. */
     public static void main(String[] args) {
         System.exit(ServerMain.run(args));
     }

@@ -152,14 +152,17 @@ public final class RunningServer {
         return parts.listener == null ? -1 : parts.listener.getPort();
     }
 
+    /** The simulation this server runs. */
     public Simulation getSimulation() {
         return parts.simulation;
     }
 
+    /** The configuration it was started with. */
     public ServerConfig getConfig() {
         return parts.config;
     }
 
+    /** The server's log. */
     public ServerLog getLog() {
         return parts.log;
     }

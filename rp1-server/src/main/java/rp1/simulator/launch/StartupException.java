@@ -20,6 +20,7 @@ public final class StartupException extends Exception {
         this(message, ExitStatus.STARTUP_FAILED);
     }
 
+    /** The status the process should exit with ({@link ExitStatus}). */
     public int getExitStatus() {
         return exitStatus;
     }

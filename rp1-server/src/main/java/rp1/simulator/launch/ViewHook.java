@@ -21,12 +21,16 @@ public interface ViewHook {
 
     /** What a view gets to work with. */
     final class Context {
+        /** The simulation to show; its world's listeners say when the picture changes. */
         public final Simulation simulation;
+        /** The server's settings (frame rates, snapshot file, ...). */
         public final ServerConfig config;
+        /** The server's log. */
         public final RsLogInterface log;
         /** Stops the server with status 0 (the view's File / Exit and window close). */
         public final Runnable exit;
 
+        /** What the server hands to its view. */
         public Context(Simulation simulation, ServerConfig config, RsLogInterface log, Runnable exit) {
             this.simulation = simulation;
             this.config = config;

@@ -21,6 +21,7 @@ public final class ClientConnection extends RsConnection {
         this.description = description;
     }
 
+    /** Who the client is, for log lines. */
     public String getDescription() {
         return description;
     }

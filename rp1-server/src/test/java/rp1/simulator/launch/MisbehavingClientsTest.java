@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 import rp1.rossum.event.RsHeartbeatEvent;
+import rp1.simulator.world.Robot;
 
 /**
  * Clients that break the protocol, vanish mid-message, stay silent or stop reading are dropped, each
@@ -62,6 +63,7 @@ class MisbehavingClientsTest {
 
             RawClient deaf = RawClient.openWithSmallBuffer(port);
             deaf.handshake(0, 0);
+            deaf.sendBody();
             deaf.sendHeartbeat(0.0005);
 
             RawClient silent = RawClient.open(port);
@@ -79,6 +81,8 @@ class MisbehavingClientsTest {
                 c.close();
             }
 
+            assertOnlyTheGoodRobotIsLeft(server);
+
             try (RawClient late = RawClient.connected(port)) {
                 late.sendTimeout(0.0, 1);
                 assertEquals(1, late.awaitEvent(RawClient.EVT_TIMEOUT).value, "the server still accepts and serves");
@@ -90,6 +94,18 @@ class MisbehavingClientsTest {
         } finally {
             server.stop();
         }
+    }
+
+    /** The robots of the dropped clients that had one (the vanishing and the deaf client) have left the world. */
+    private static void assertOnlyTheGoodRobotIsLeft(RunningServer server) throws InterruptedException {
+        long deadline = System.nanoTime() + 10_000_000_000L;
+        List<Robot> robots = server.getSimulation().getWorld().getRobots();
+        while (robots.size() != 1 && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+            robots = server.getSimulation().getWorld().getRobots();
+        }
+        assertEquals(1, robots.size(), "robots: " + robots);
+        assertEquals("good", robots.get(0).getLabel());
     }
 
     private static void assertHeartbeatsInSequenceAtTheirTimes(List<RsHeartbeatEvent> beats) {
