@@ -18,6 +18,11 @@ final class ChannelInput extends InputStream {
     private final SocketChannel channel;
     private final Selector readable;
     private volatile long timeoutMillis;
+    /**
+     * Whether the last read found the socket empty (returned less than asked): then the next read
+     * waits for data first instead of trying a read that would only say "nothing yet".
+     */
+    private boolean drained;
 
     ChannelInput(SocketChannel channel) throws IOException {
         this.channel = channel;
@@ -50,19 +55,26 @@ final class ChannelInput extends InputStream {
         long limit = timeoutMillis;
         long deadline = System.nanoTime() + limit * 1_000_000L;
         while (true) {
+            if (drained) {
+                awaitReadable(limit, deadline);
+            }
             int n = channel.read(buffer);
+            drained = n < len;
             if (n != 0) {
                 return n;
             }
-            long wait = 0;
-            if (limit > 0) {
-                wait = (deadline - System.nanoTime()) / 1_000_000L;
-                if (wait <= 0) {
-                    throw new SocketTimeoutException("no data within " + limit + " ms");
-                }
-            }
-            awaitReadable(wait);
         }
+    }
+
+    private void awaitReadable(long limit, long deadline) throws IOException {
+        long wait = 0;
+        if (limit > 0) {
+            wait = (deadline - System.nanoTime()) / 1_000_000L;
+            if (wait <= 0) {
+                throw new SocketTimeoutException("no data within " + limit + " ms");
+            }
+        }
+        awaitReadable(wait);
     }
 
     private void awaitReadable(long millis) throws IOException {
