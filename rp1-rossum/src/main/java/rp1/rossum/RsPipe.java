@@ -109,6 +109,15 @@ public final class RsPipe {
     }
 
     /**
+     * How many bytes can be written now without blocking. With a single writer this stays true until
+     * it writes: the reader only ever makes more room. Lets a server write to an in-process client
+     * without a thread hop when the client keeps up, and queue the message when it does not.
+     */
+    public synchronized int room() {
+        return buffer.length - count;
+    }
+
+    /**
      * Whether everything written so far has been read and the reader is blocked waiting for more:
      * a reader that decodes messages has then dealt with every message it was sent. The simulator
      * uses this to start its clock only once in-process clients have finished their first requests.

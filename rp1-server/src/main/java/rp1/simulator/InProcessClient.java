@@ -1,6 +1,8 @@
 package rp1.simulator;
 
 import java.io.IOException;
+import java.io.OutputStream;
+import java.util.function.Function;
 
 import rp1.rossum.RsConnection;
 import rp1.rossum.RsPipe;
@@ -17,7 +19,7 @@ public final class InProcessClient {
     private final RsRunnable client;
     private final RsPipe toServer = new RsPipe();
     private final RsPipe toClient = new RsPipe();
-    private final RsConnection connection = new RsConnection();
+    private final RsConnection connection;
     private final ClientSession session;
 
     /**
@@ -26,8 +28,19 @@ public final class InProcessClient {
      * {@code setLogger} with the simulation's log.
      */
     public InProcessClient(Simulation simulation, RsRunnable client, String description, boolean shareLog) {
+        this(simulation, client, description, shareLog, new RsConnection(), RsPipe::getOutputStream);
+    }
+
+    /**
+     * Connects {@code client} as above, with {@code connection} as the server's end, which writes to
+     * the client through the stream {@code outbound} makes of the pipe to the client (the server puts a
+     * bounded queue there so that a client that stops reading cannot hold up the simulation).
+     */
+    public InProcessClient(Simulation simulation, RsRunnable client, String description, boolean shareLog,
+                           RsConnection connection, Function<RsPipe, OutputStream> outbound) {
         this.client = client;
-        connection.setInputOutputStreams(toServer.getInputStream(), toClient.getOutputStream());
+        this.connection = connection;
+        connection.setInputOutputStreams(toServer.getInputStream(), outbound.apply(toClient));
         session = simulation.attach(connection, description);
         Thread reader = new Thread(connection, "connection " + description);
         reader.setDaemon(true);

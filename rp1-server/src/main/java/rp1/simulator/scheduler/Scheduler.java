@@ -59,7 +59,11 @@ public final class Scheduler {
         Entry e = new Entry(immediate, time, priority, sequence++, task);
         queue.add(e);
         queued.put(task, e);
-        notifyAll();
+        // The loop only needs waking if it can run the new task sooner than what it waits for: with
+        // the clock stopped (the interlock is open) it waits for the restart, which wakes it anyway.
+        if (clock.isRunning() && queue.first() == e) {
+            notifyAll();
+        }
         return true;
     }
 

@@ -1,11 +1,7 @@
 package rp1.simulator.world;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
-
-import rp1.rossum.RsWall;
 
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
@@ -59,9 +55,8 @@ final class MotionStepper implements Task {
             RobotContacts.resolve(placed, time, time + interval + RobotContacts.LOOK_AHEAD);
         }
         double next = Double.POSITIVE_INFINITY;
-        Map<Robot, RsWall[]> shapes = new HashMap<>();
         for (Robot r : active) {
-            r.sense(time, world.getPlan(), world.obstaclesFor(r, placed, shapes));
+            r.sense(time, world.getPlan(), world.obstaclesFor(r, placed));
             double n = r.finish(time, interval);
             if (!Double.isNaN(n)) {
                 next = Math.min(next, n);

@@ -34,9 +34,10 @@ public final class Robot {
     private final EventSink events;
     private final RsBody body;
     private final RobotShapes shapes;
+    /** How far from the body origin the range and target sensors can see anything, metres. */
+    private final double sensorReach;
     private final String label;
     private final List<PaintTrail> trails;
-    private final double sensingReach;
     private volatile boolean placed;
     private RsMotionRequest pending;
     private boolean moving;
@@ -47,6 +48,7 @@ public final class Robot {
         this.body = body;
         this.events = events;
         this.shapes = new RobotShapes(body);
+        this.sensorReach = sensorReach(body);
         String name = body.getName();
         this.label = name == null || name.isEmpty() ? "robot " + number : name;
         List<PaintTrail> t = new ArrayList<>();
@@ -54,14 +56,10 @@ public final class Robot {
             t.add(new PaintTrail(p));
         }
         trails = Collections.unmodifiableList(t);
-        sensingReach = sensingReach(body);
     }
 
-    /**
-     * How far from the body origin the robot's range and target sensors can be affected by an
-     * obstacle (detector offset plus maximum range); 0 if it has none.
-     */
-    private static double sensingReach(RsBody body) {
+    /** How far from the body origin range and target sensors reach (detector offset plus range); 0 without any. */
+    private static double sensorReach(RsBody body) {
         double reach = 0.0;
         for (RsBodySensor s : body.getBodySensorArray()) {
             if (s instanceof RsBodyRangeSensor) {
@@ -75,9 +73,20 @@ public final class Robot {
         return reach;
     }
 
-    /** See {@link #sensingReach(RsBody)}. */
-    double sensingReach() {
-        return sensingReach;
+    /** Whether the robot has range or target sensors, which other robots can affect. */
+    boolean hasWallSensors() {
+        return sensorReach > 0.0;
+    }
+
+    /**
+     * Whether this robot's range or target sensors could see {@code other} (or be blocked by it) at
+     * their current poses: some of it is within the sensors' reach.
+     */
+    boolean canSee(Robot other) {
+        RsTransform a = pose();
+        RsTransform b = other.pose();
+        double d = Math.hypot(a.m13 - b.m13, a.m23 - b.m23);
+        return d <= sensorReach + other.shapes.reach() + 1.0e-9;
     }
 
     /** The order in which the robot joined the world, from 1. */

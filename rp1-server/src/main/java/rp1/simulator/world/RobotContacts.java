@@ -36,17 +36,18 @@ final class RobotContacts {
     /** Searches [from, to] for contacts between moving robots and every other placed robot. */
     static void resolve(List<Robot> placed, double from, double to) {
         int n = placed.size();
-        RsRectangle[] swept = new RsRectangle[n];
+        // Each robot's swept box once, not once per pair: the pair test is then a box overlap.
+        RsRectangle[] boxes = new RsRectangle[n];
         for (int i = 0; i < n; i++) {
             Robot r = placed.get(i);
-            swept[i] = r.shapes().isEmpty() ? null : swept(r, from, to);
+            boxes[i] = r.shapes().isEmpty() ? null : swept(r, from, to);
         }
         for (int i = 0; i < n; i++) {
             Robot a = placed.get(i);
             for (int j = i + 1; j < n; j++) {
                 Robot b = placed.get(j);
-                if ((a.isMoving() || b.isMoving()) && swept[i] != null && swept[j] != null
-                        && swept[i].intersects(swept[j])) {
+                if ((a.isMoving() || b.isMoving()) && boxes[i] != null && boxes[j] != null
+                        && boxes[i].intersects(boxes[j])) {
                     resolvePair(a, b, from, to);
                 }
             }

@@ -1,5 +1,7 @@
 package rp1.simulator.world;
 
+import java.util.Arrays;
+
 import rp1.rossum.RsBody;
 import rp1.rossum.RsBodyShape;
 import rp1.rossum.RsRectangle;
@@ -16,6 +18,9 @@ import rp1.rossum.RsWall;
 final class RobotShapes {
     private final double[][] outlines;
     private final double reach;
+    /** The last pose {@link #asWalls} was asked for (m11, m12, m13, m21, m22, m23) and its answer. */
+    private final double[] wallsPose = new double[6];
+    private RsWall[] walls;
 
     RobotShapes(RsBody body) {
         RsBodyShape[] shapes = body.getInteractiveBodyShapeArray();
@@ -39,8 +44,21 @@ final class RobotShapes {
         return outlines.length == 0;
     }
 
-    /** The shapes at {@code pose} as walls named {@code name}; shapes without area are left out. */
+    /**
+     * The shapes at {@code pose} as walls named {@code name}; shapes without area are left out. Every
+     * robot with a sensor asks for every nearby robot's walls at each motion step, so the answer for
+     * the last pose is kept; callers only read it.
+     */
     RsWall[] asWalls(RsTransform pose, String name) {
+        double[] p = {pose.m11, pose.m12, pose.m13, pose.m21, pose.m22, pose.m23};
+        if (walls == null || !Arrays.equals(p, wallsPose)) {
+            walls = wallsAt(pose, name);
+            System.arraycopy(p, 0, wallsPose, 0, p.length);
+        }
+        return walls;
+    }
+
+    private RsWall[] wallsAt(RsTransform pose, String name) {
         RsWall[] walls = new RsWall[outlines.length];
         int n = 0;
         for (double[] outline : outlines) {
@@ -50,7 +68,7 @@ final class RobotShapes {
                 walls[n++] = w;
             }
         }
-        return n == walls.length ? walls : java.util.Arrays.copyOf(walls, n);
+        return n == walls.length ? walls : Arrays.copyOf(walls, n);
     }
 
     /** The shapes' edges at {@code pose}, one array per shape. */

@@ -195,31 +195,21 @@ public final class World {
 
     /**
      * What blocks the robot's range and target sensors: the walls, plus the other robots on the floor
-     * close enough to matter. {@code shapes} caches each robot's shapes as walls for one motion step.
+     * within the sensors' reach.
      */
-    RsWall[] obstaclesFor(Robot r, List<Robot> placed, Map<Robot, RsWall[]> shapes) {
-        double reach = r.sensingReach();
-        if (reach == 0.0 || placed.size() < 2) {
+    RsWall[] obstaclesFor(Robot r, List<Robot> placed) {
+        if (!r.hasWallSensors() || placed.size() < 2) {
             return walls;
         }
-        RsTransform pose = r.pose();
-        List<RsWall> all = null;
+        // Only robots within the sensors' reach can change a reading; with many robots, looking at
+        // all of them from every robot at every step made the world quadratic.
+        List<Robot> seen = new ArrayList<>();
         for (Robot o : placed) {
-            if (o == r || !near(pose, o, reach)) {
-                continue;
+            if (o != r && r.canSee(o)) {
+                seen.add(o);
             }
-            if (all == null) {
-                all = new ArrayList<>(walls.length + 8);
-                Collections.addAll(all, walls);
-            }
-            Collections.addAll(all, shapes.computeIfAbsent(o, Robot::asObstacles));
         }
-        return all == null ? walls : all.toArray(new RsWall[0]);
-    }
-
-    private static boolean near(RsTransform pose, Robot o, double reach) {
-        RsTransform p = o.pose();
-        return Math.hypot(p.m13 - pose.m13, p.m23 - pose.m23) <= reach + o.shapes().reach();
+        return seen.isEmpty() ? walls : withRobots(r, seen);
     }
 
     private RsWall[] withRobots(Robot self, List<Robot> others) {

@@ -1,0 +1,160 @@
+package rp1.simulator.launch;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import rp1.rossum.RsClient;
+import rp1.rossum.RsProperties;
+import rp1.simulator.InProcessClient;
+import rp1.simulator.Simulation;
+import rp1.simulator.config.ServerConfig;
+import rp1.simulator.net.ClientConnection;
+import rp1.simulator.net.ClientRegistry;
+import rp1.simulator.net.OutboundQueue;
+import rp1.simulator.net.Transport;
+
+/**
+ * Launches the dynamically loaded clients named in {@code dlcName} (behavior.md section 3.4; several
+ * names may be given, comma-separated). Calls, in the original's order: constructor,
+ * {@code setInputOutputStreams} (with {@code dlcSetIO}: in-process pipes, no handshake),
+ * {@code setLogger} (with {@code dlcSetLog}: the server's log), then {@code initialize()} and
+ * {@code run()} on a thread per client.
+ *
+ * <p>Without {@code dlcSetIO} the client connects over TCP itself; an {@code RsClient} is given the
+ * server's actual address and port in its {@code rsProperties}, any other {@code RsRunnable} has to
+ * find them on its own.
+ */
+final class ClientLauncher implements LoadedClient.Listener {
+    /** What the server does when clients fail or finish. */
+    interface Outcome {
+        /** A client's {@code initialize()} threw. */
+        void clientFailed();
+
+        /** Every client's thread has ended; {@code anyFailed} if one of them failed. */
+        void allFinished(boolean anyFailed);
+    }
+
+    private final List<LoadedClient> clients;
+    private final ServerConfig config;
+    private final ServerLog log;
+    private final AtomicInteger running;
+    private volatile Outcome outcome;
+
+    private ClientLauncher(List<LoadedClient> clients, ServerConfig config, ServerLog log) {
+        this.clients = clients;
+        this.config = config;
+        this.log = log;
+        this.running = new AtomicInteger(clients.size());
+    }
+
+    /**
+     * Loads and instantiates every client class the configuration names (none unless
+     * {@code dlcEnabled}).
+     *
+     * @throws StartupException if a class cannot be used; nothing is started
+     */
+    static ClientLauncher create(ServerConfig config, ServerLog log, ClassLoader loader) throws StartupException {
+        List<LoadedClient> loaded = new ArrayList<>();
+        if (config.dlcEnabled) {
+            for (String name : config.dlcNames) {
+                log.log("Loading class for client: \"" + name + "\"");
+                loaded.add(LoadedClient.create(name, loader));
+            }
+        }
+        return new ClientLauncher(Collections.unmodifiableList(loaded), config, log);
+    }
+
+    boolean isEmpty() {
+        return clients.isEmpty();
+    }
+
+    /**
+     * Connects every client to {@code simulation} and starts its thread.
+     *
+     * @param port the port of the server's listener, for clients that connect over TCP (-1 if none)
+     */
+    void launch(Simulation simulation, ClientRegistry registry, int port, Outcome whenDone) throws IOException {
+        outcome = whenDone;
+        for (LoadedClient c : clients) {
+            if (config.dlcSetIO) {
+                connectInProcess(c, simulation, registry);
+            } else {
+                pointAtServer(c, port);
+                if (config.dlcSetLog) {
+                    c.client.setLogger(log);
+                }
+            }
+            log.log("Launching thread for client: \"" + c.className + "\"");
+            c.start(log, this);
+        }
+    }
+
+    private void connectInProcess(LoadedClient c, Simulation simulation, ClientRegistry registry) {
+        String description = "client " + registry.nextNumber() + " (in-process " + c.className + ")";
+        ClientConnection connection = new ClientConnection(description);
+        registry.add(connection);
+        InProcessClient link = new InProcessClient(simulation, c.client, description, config.dlcSetLog, connection,
+                pipe -> OutboundQueue.start(Transport.of(pipe), config.clientQueueLimit, "writer " + description,
+                        connection::close));
+        c.setLink(link);
+        log.log(description + " connected");
+    }
+
+    private void pointAtServer(LoadedClient c, int port) throws IOException {
+        if (!(c.client instanceof RsClient)) {
+            return;
+        }
+        InetAddress bound = InetAddress.getByName(config.bindAddress);
+        RsProperties p = new RsProperties();
+        p.hostName = bound.isAnyLocalAddress() ? InetAddress.getLoopbackAddress().getHostAddress() : bound.getHostAddress();
+        p.port = port;
+        ((RsClient) c.client).rsProperties = p;
+    }
+
+    /**
+     * Waits until every client's {@code initialize()} has returned and the server has dealt with the
+     * requests the in-process ones sent meanwhile, at most {@code timeoutSeconds}. A lockstep
+     * simulation starts its clock after this, so a run's first requests are all stamped at time 0
+     * whatever the threads did, and the same seed gives the same run.
+     *
+     * @return whether every client got that far in time
+     */
+    boolean awaitReady(double timeoutSeconds) throws InterruptedException {
+        long deadline = System.nanoTime() + (long) (timeoutSeconds * TimeUnit.SECONDS.toNanos(1));
+        boolean all = true;
+        for (LoadedClient c : clients) {
+            if (!c.awaitReady(deadline)) {
+                log.log("client " + c.className + ": initialize() has not finished after " + timeoutSeconds
+                        + " s; starting the clock anyway");
+                all = false;
+            }
+        }
+        return all;
+    }
+
+    @Override
+    public void initializeFailed(LoadedClient client) {
+        outcome.clientFailed();
+    }
+
+    @Override
+    public void finished(LoadedClient client) {
+        if (running.decrementAndGet() == 0) {
+            outcome.allFinished(anyFailed());
+        }
+    }
+
+    private boolean anyFailed() {
+        for (LoadedClient c : clients) {
+            if (c.hasFailed()) {
+                return true;
+            }
+        }
+        return false;
+    }
+}

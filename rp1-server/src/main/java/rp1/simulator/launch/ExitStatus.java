@@ -1,0 +1,14 @@
+package rp1.simulator.launch;
+
+/** The server's exit statuses. */
+public final class ExitStatus {
+    /** Stopped as asked (Ctrl-C, maxSimulationTime, every loaded client done, the view closed). */
+    public static final int OK = 0;
+    /** Did not start: bad command line, properties or floor plan, port in use, a client class unusable. */
+    public static final int STARTUP_FAILED = 1;
+    /** A loaded client failed: its constructor, initialize() or run() threw. */
+    public static final int CLIENT_FAILED = 2;
+
+    private ExitStatus() {
+    }
+}

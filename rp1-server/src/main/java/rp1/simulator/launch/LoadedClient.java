@@ -1,0 +1,146 @@
+package rp1.simulator.launch;
+
+import java.lang.reflect.Constructor;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Modifier;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+import rp1.rossum.RsRunnable;
+import rp1.simulator.InProcessClient;
+
+/**
+ * One dynamically loaded client (behavior.md section 3.4): an {@link RsRunnable} created from a class
+ * name with its public no-argument constructor, then connected, initialized and run on a thread of
+ * its own. Records whether it failed.
+ */
+final class LoadedClient {
+    /** How a loaded client's thread ended, reported once. */
+    interface Listener {
+        /** {@code initialize()} threw: the client never ran. */
+        void initializeFailed(LoadedClient client);
+
+        /** The thread ended: {@code run()} returned or threw, or initialization failed. */
+        void finished(LoadedClient client);
+    }
+
+    final String className;
+    final RsRunnable client;
+    private final CountDownLatch initialized = new CountDownLatch(1);
+    private volatile InProcessClient link;
+    private volatile boolean failed;
+
+    private LoadedClient(String className, RsRunnable client) {
+        this.className = className;
+        this.client = client;
+    }
+
+    /**
+     * Loads {@code className} and creates an instance.
+     *
+     * @throws StartupException naming the class and the reason if it cannot be found or loaded, is
+     *                          not an {@code RsRunnable}, has no public no-argument constructor, or the
+     *                          constructor throws
+     */
+    static LoadedClient create(String className, ClassLoader loader) throws StartupException {
+        Class<?> type = load(className, loader);
+        if (!RsRunnable.class.isAssignableFrom(type)) {
+            throw new StartupException("client class " + className + " does not implement " + RsRunnable.class.getName());
+        }
+        if (Modifier.isAbstract(type.getModifiers())) {
+            throw new StartupException("client class " + className + " is abstract");
+        }
+        Constructor<?> constructor;
+        try {
+            constructor = type.getConstructor();
+        } catch (NoSuchMethodException e) {
+            throw new StartupException("client class " + className + " has no public constructor without arguments");
+        }
+        try {
+            return new LoadedClient(className, (RsRunnable) constructor.newInstance());
+        } catch (InvocationTargetException e) {
+            throw new StartupException("client class " + className + ": its constructor failed: "
+                    + describe(e.getCause()), ExitStatus.CLIENT_FAILED);
+        } catch (ReflectiveOperationException e) {
+            throw new StartupException("client class " + className + " cannot be instantiated: " + describe(e));
+        }
+    }
+
+    private static Class<?> load(String className, ClassLoader loader) throws StartupException {
+        try {
+            return Class.forName(className, true, loader);
+        } catch (ClassNotFoundException e) {
+            throw new StartupException("client class " + className + " not found on the class path (dlcName)");
+        } catch (LinkageError e) {
+            throw new StartupException("client class " + className + " cannot be loaded: " + describe(e));
+        }
+    }
+
+    /** An exception as one line: its type and message. */
+    static String describe(Throwable t) {
+        return t.getMessage() == null ? t.getClass().getName() : t.getClass().getName() + ": " + t.getMessage();
+    }
+
+    /** The in-process link, if the client talks to the server through pipes. */
+    void setLink(InProcessClient link) {
+        this.link = link;
+    }
+
+    /** Starts the client's thread: {@code initialize()}, then {@code run()}. */
+    void start(ServerLog log, Listener listener) {
+        Thread t = new Thread(() -> runClient(log, listener), "dlc " + className);
+        t.setDaemon(true);
+        t.start();
+    }
+
+    /*
+     * Whatever a client throws, Errors included, ends in one log line and a recorded failure rather
+     * than a stack dump from a dead thread: the server has to know the client is gone.
+     */
+    private void runClient(ServerLog log, Listener listener) {
+        try {
+            try {
+                client.initialize();
+            } catch (Throwable t) {
+                failed = true;
+                log.important("client " + className + ": initialize() failed: " + describe(t));
+                listener.initializeFailed(this);
+                return;
+            } finally {
+                initialized.countDown();
+            }
+            try {
+                client.run();
+                log.log("client " + className + ": run() returned");
+            } catch (Throwable t) {
+                failed = true;
+                log.important("client " + className + ": run() failed: " + describe(t));
+            }
+        } finally {
+            InProcessClient l = link;
+            if (l != null) {
+                l.close();
+            }
+            listener.finished(this);
+        }
+    }
+
+    boolean hasFailed() {
+        return failed;
+    }
+
+    /**
+     * Waits until {@code initialize()} has returned (or failed) and, for an in-process client, the
+     * server has read everything it sent so far, at most until {@code deadlineNanos}.
+     *
+     * @return whether the client got that far in time
+     */
+    boolean awaitReady(long deadlineNanos) throws InterruptedException {
+        if (!initialized.await(Math.max(0L, deadlineNanos - System.nanoTime()), TimeUnit.NANOSECONDS)) {
+            return false;
+        }
+        InProcessClient l = link;
+        return l == null || failed
+                || l.awaitDrained(Math.max(0L, TimeUnit.NANOSECONDS.toMillis(deadlineNanos - System.nanoTime())));
+    }
+}

@@ -1,0 +1,240 @@
+package rp1.simulator.launch;
+
+import java.io.IOException;
+import java.util.OptionalInt;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+import rp1.simulator.Simulation;
+import rp1.simulator.config.ServerConfig;
+import rp1.simulator.net.ClientListener;
+import rp1.simulator.net.ClientRegistry;
+import rp1.simulator.scheduler.Scheduler;
+
+/**
+ * A server that has started: its threads (scheduler, listener, a reader and a writer per client, one
+ * per loaded client, behavior.md section 3.2) are running. It stops when asked ({@link #stop()},
+ * Ctrl-C through {@code rp1.Server}'s shutdown hook, the view's exit), at {@code maxSimulationTime},
+ * when every loaded client is done ({@code exitWhenClientsDone}), or when a loaded client fails to
+ * initialize. Stopping closes every client, stops the scheduler and flushes and closes the log; the
+ * exit status says how it ended ({@link ExitStatus}).
+ */
+public final class RunningServer {
+    /** How long stopping waits for the scheduler to finish the task it is running. */
+    private static final long SCHEDULER_JOIN_MILLIS = 5000;
+
+    private final Parts parts;
+    private final Thread scheduler;
+    private final AtomicBoolean stopping = new AtomicBoolean();
+    private final CountDownLatch exited = new CountDownLatch(1);
+    private volatile int exitStatus = ExitStatus.OK;
+    private volatile AutoCloseable view = () -> { };
+
+    /** What {@link ServerLauncher} built, handed over to run. */
+    static final class Parts {
+        final ServerConfig config;
+        final ServerLog log;
+        final Simulation simulation;
+        final ClientRegistry registry;
+        final ClientListener listener;
+        final ClientLauncher launcher;
+        final ViewHook viewHook;
+
+        Parts(ServerConfig config, ServerLog log, Simulation simulation, ClientRegistry registry,
+              ClientListener listener, ClientLauncher launcher, ViewHook viewHook) {
+            this.config = config;
+            this.log = log;
+            this.simulation = simulation;
+            this.registry = registry;
+            this.listener = listener;
+            this.launcher = launcher;
+            this.viewHook = viewHook;
+        }
+    }
+
+    private RunningServer(Parts parts) {
+        this.parts = parts;
+        this.scheduler = new Thread(parts.simulation::runPaused, "scheduler");
+        scheduler.setDaemon(true);
+    }
+
+    /** Starts the view, the scheduler, the listener and the loaded clients, then the clock. */
+    static RunningServer begin(Parts parts) throws StartupException {
+        RunningServer server = new RunningServer(parts);
+        try {
+            server.openView();
+            server.startThreads();
+        } catch (StartupException e) {
+            parts.log.important("Fatal error: " + e.getMessage());
+            server.shutDown(e.getExitStatus());
+            throw e;
+        }
+        return server;
+    }
+
+    private void openView() throws StartupException {
+        try {
+            view = parts.viewHook.open(new ViewHook.Context(parts.simulation, parts.config, parts.log,
+                    () -> requestStop(ExitStatus.OK)));
+        } catch (Exception e) {
+            throw new StartupException("cannot open the view: " + LoadedClient.describe(e));
+        }
+    }
+
+    private void startThreads() throws StartupException {
+        ServerConfig c = parts.config;
+        parts.log.log("Starting main scheduler loop with simulation speed: " + (c.lockstep ? "max" : c.simulationSpeed));
+        parts.log.log("modelingFrameInterval (sec): " + c.modelingInterval);
+        scheduler.start();
+        scheduleMaxTime();
+        if (parts.listener != null) {
+            parts.listener.start();
+        }
+        try {
+            parts.launcher.launch(parts.simulation, parts.registry, getPort(), new ClientOutcome());
+        } catch (IOException e) {
+            throw new StartupException("cannot launch the loaded clients: " + e.getMessage());
+        }
+        if (c.lockstep && !parts.launcher.isEmpty()) {
+            Thread barrier = new Thread(this::startClockWhenClientsReady, "clock start");
+            barrier.setDaemon(true);
+            barrier.start();
+        } else {
+            parts.simulation.startClock();
+        }
+    }
+
+    private void scheduleMaxTime() {
+        double max = parts.config.maxSimulationTime;
+        if (Double.isInfinite(max)) {
+            return;
+        }
+        // Heartbeat priority: the events due at exactly that time still go out first.
+        parts.simulation.getScheduler().schedule(max, Scheduler.HEARTBEAT, t -> {
+            parts.simulation.shutdown();
+            parts.log.log("maxSimulationTime " + max + " s reached");
+            requestStop(ExitStatus.OK);
+        });
+    }
+
+    private void startClockWhenClientsReady() {
+        try {
+            parts.launcher.awaitReady(parts.config.connectTimeout);
+            parts.simulation.startClock();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** How loaded clients end the server. */
+    private final class ClientOutcome implements ClientLauncher.Outcome {
+        @Override
+        public void clientFailed() {
+            requestStop(ExitStatus.CLIENT_FAILED);
+        }
+
+        @Override
+        public void allFinished(boolean anyFailed) {
+            if (parts.config.exitWhenClientsDone) {
+                parts.log.log("Every loaded client has finished (exitWhenClientsDone)");
+                requestStop(anyFailed ? ExitStatus.CLIENT_FAILED : ExitStatus.OK);
+            }
+        }
+    }
+
+    /** The port network clients connect to, or -1 if network clients are disabled. */
+    public int getPort() {
+        return parts.listener == null ? -1 : parts.listener.getPort();
+    }
+
+    /** The simulation this server runs. */
+    public Simulation getSimulation() {
+        return parts.simulation;
+    }
+
+    /** The configuration it was started with. */
+    public ServerConfig getConfig() {
+        return parts.config;
+    }
+
+    /** The server's log. */
+    public ServerLog getLog() {
+        return parts.log;
+    }
+
+    /**
+     * Asks the server to stop with {@code status} and returns at once; the first request decides the
+     * status. Safe from any thread, including the scheduler's and a client's.
+     */
+    public void requestStop(int status) {
+        if (!stopping.compareAndSet(false, true)) {
+            return;
+        }
+        Thread t = new Thread(() -> shutDown(status), "shutdown");
+        t.start();
+    }
+
+    /** Stops the server (status 0 unless it was already stopping) and waits until it has. */
+    public int stop() throws InterruptedException {
+        requestStop(ExitStatus.OK);
+        return awaitExit();
+    }
+
+    /** Waits until the server has stopped; returns the exit status. */
+    public int awaitExit() throws InterruptedException {
+        exited.await();
+        return exitStatus;
+    }
+
+    /** Waits at most {@code timeout}; the exit status if the server stopped by then. */
+    public OptionalInt awaitExit(long timeout, TimeUnit unit) throws InterruptedException {
+        return exited.await(timeout, unit) ? OptionalInt.of(exitStatus) : OptionalInt.empty();
+    }
+
+    /** Whether the server has stopped. */
+    public boolean hasExited() {
+        return exited.getCount() == 0;
+    }
+
+    /** Closes everything, in the order that lets clients see an orderly end and the log record it. */
+    private void shutDown(int status) {
+        stopping.set(true);
+        exitStatus = status;
+        ServerLog log = parts.log;
+        log.important("Shutting down simulator" + (status == ExitStatus.OK ? "" : " (exit status " + status + ")"));
+        if (parts.listener != null) {
+            parts.listener.close();
+        }
+        // The scheduler stops first and the view closes while the clients are still connected, so
+        // the picture written at exit shows the robots where the run left them.
+        parts.simulation.shutdown();
+        joinScheduler();
+        closeView();
+        parts.registry.closeAll("the server is shutting down");
+        Runtime rt = Runtime.getRuntime();
+        log.raw("  Total Memory used by JVM: " + rt.totalMemory());
+        log.raw("  Free  Memory:             " + rt.freeMemory());
+        log.close();
+        exited.countDown();
+    }
+
+    private void joinScheduler() {
+        if (Thread.currentThread() == scheduler || !scheduler.isAlive()) {
+            return;
+        }
+        try {
+            scheduler.join(SCHEDULER_JOIN_MILLIS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private void closeView() {
+        try {
+            view.close();
+        } catch (Exception e) {
+            parts.log.log("closing the view failed: " + LoadedClient.describe(e));
+        }
+    }
+}

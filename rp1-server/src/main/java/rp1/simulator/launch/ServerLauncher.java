@@ -1,0 +1,154 @@
+package rp1.simulator.launch;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Locale;
+
+import rp1.planparser.RsParsingException;
+import rp1.planparser.RsPlanParser;
+import rp1.rossum.RsPlan;
+import rp1.simulator.Simulation;
+import rp1.simulator.SimulationSettings;
+import rp1.simulator.config.ConfigException;
+import rp1.simulator.config.ResourceLocator;
+import rp1.simulator.config.ServerArguments;
+import rp1.simulator.config.ServerConfig;
+import rp1.simulator.net.ClientListener;
+import rp1.simulator.net.ClientRegistry;
+
+/**
+ * Starts a server from its command line ({@code -p PROPERTIES}, {@code -f PLAN}) the way
+ * {@code rp1.Server} does, but returns a handle instead of owning the process, so tests run servers
+ * in-process on free ports (behavior.md sections 2 and 3.1).
+ *
+ * <p>Everything that can be checked before anything runs is checked first: command line, properties,
+ * log file, floor plan, client classes, the listening port. Any failure there is one
+ * {@link StartupException} with a one-line message (also written to the log if it is open), and
+ * nothing is left running.
+ */
+public final class ServerLauncher {
+    private ServerLauncher() {
+    }
+
+    /** {@link #start(String[], Path, LaunchOptions)} with the default options. */
+    public static RunningServer start(String[] args, Path workingDirectory) throws StartupException {
+        return start(args, workingDirectory, LaunchOptions.defaults());
+    }
+
+    /**
+     * Starts a server.
+     *
+     * @param args             the command line: {@code -p PROPERTIES} and {@code -f PLAN}
+     * @param workingDirectory where {@code -p}, the floor plan and the log file are looked for first
+     * @param options          a port override and the view
+     * @throws StartupException if the server cannot start; nothing is left running
+     */
+    public static RunningServer start(String[] args, Path workingDirectory, LaunchOptions options)
+            throws StartupException {
+        ClassLoader loader = classLoader();
+        ResourceLocator locator = new ResourceLocator(workingDirectory, loader);
+        ServerConfig config = configure(args, locator);
+        ServerLog log = openLog(config, workingDirectory);
+        ClientListener listener = null;
+        RunningServer.Parts parts;
+        try {
+            log.important("STARTING SIMULATOR SESSION");
+            Simulation simulation = simulate(config, locator, log);
+            ClientLauncher launcher = ClientLauncher.create(config, log, loader);
+            ClientRegistry registry = new ClientRegistry(log);
+            listener = listen(config, options, simulation, registry, log);
+            parts = new RunningServer.Parts(config, log, simulation, registry, listener, launcher, options.view);
+        } catch (StartupException | RuntimeException e) {
+            if (listener != null) {
+                listener.close();
+            }
+            String message = e instanceof StartupException ? e.getMessage() : LoadedClient.describe(e);
+            log.important("Fatal error: " + message);
+            log.close();
+            throw e;
+        }
+        return RunningServer.begin(parts);
+    }
+
+    private static ClassLoader classLoader() {
+        ClassLoader context = Thread.currentThread().getContextClassLoader();
+        return context != null ? context : ServerLauncher.class.getClassLoader();
+    }
+
+    /** Reads the command line and the properties; every value is validated. */
+    static ServerConfig configure(String[] args, ResourceLocator locator) throws StartupException {
+        try {
+            ServerArguments arguments = ServerArguments.parse(args);
+            ResourceLocator.Found found = locator.properties(arguments.propertiesName);
+            ServerConfig config = ServerConfig.from(ResourceLocator.parseProperties(found), found.location,
+                    arguments.planName);
+            if (config.exitWhenClientsDone && !config.dlcEnabled) {
+                throw new ConfigException(found.location + ": exitWhenClientsDone=true, but no client is loaded "
+                        + "(dlcEnabled is false): the server would never exit");
+            }
+            return config;
+        } catch (ConfigException e) {
+            throw new StartupException(e.getMessage());
+        }
+    }
+
+    private static ServerLog openLog(ServerConfig config, Path workingDirectory) throws StartupException {
+        String file = config.logToFile ? workingDirectory.resolve(config.logFileName).toString() : null;
+        try {
+            return ServerLog.open(file, config.logToSystemOut, config.logVerbose);
+        } catch (IOException e) {
+            throw new StartupException("cannot create the log file " + file + " (logFileName): " + e.getMessage());
+        }
+    }
+
+    /** Reads the floor plan and creates the simulation, seeded (and the seed logged, to repeat the run). */
+    private static Simulation simulate(ServerConfig config, ResourceLocator locator, ServerLog log)
+            throws StartupException {
+        RsPlan plan;
+        try {
+            ResourceLocator.Found text = locator.plan(config.floorPlanFileName);
+            log.log("Loading floor plan from " + text.location);
+            plan = RsPlanParser.parse(text.reader(), text.location);
+        } catch (ConfigException e) {
+            throw new StartupException(e.getMessage());
+        } catch (RsParsingException e) {
+            throw new StartupException(e.getMessage());
+        } catch (IOException e) {
+            throw new StartupException("cannot read the floor plan " + config.floorPlanFileName + ": " + e.getMessage());
+        }
+        long seed = config.randomSeed.orElse(System.nanoTime());
+        log.log("randomSeed=" + seed + (config.randomSeed.isPresent() ? "" : "; set it to repeat this run"));
+        SimulationSettings settings = config.lockstep
+                ? SimulationSettings.lockstep(config.modelingInterval, seed)
+                : SimulationSettings.paced(config.modelingInterval, config.simulationSpeed, config.interlockEnabled, seed);
+        Simulation simulation = new Simulation(plan, settings, log);
+        log.setSimTime(() -> recordedSimTime(simulation));
+        return simulation;
+    }
+
+    /** The scheduler's last recorded time (not brought up to date with the wall clock), as the original logs it. */
+    private static double recordedSimTime(Simulation simulation) {
+        synchronized (simulation.getScheduler()) {
+            return simulation.getScheduler().getClock().getSimTime();
+        }
+    }
+
+    private static ClientListener listen(ServerConfig config, LaunchOptions options, Simulation simulation,
+                                         ClientRegistry registry, ServerLog log) throws StartupException {
+        if (!config.enableNetworkClients) {
+            log.log("Network client connections disabled (in response to configuration option)");
+            return null;
+        }
+        int port = options.port.orElse(config.port);
+        try {
+            ClientListener listener = ClientListener.bind(config.bindAddress, port, simulation, registry, log,
+                    new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit));
+            log.log("Socket ready: " + config.bindAddress + ":" + listener.getPort());
+            return listener;
+        } catch (IOException e) {
+            throw new StartupException(String.format(Locale.ROOT,
+                    "cannot listen on %s:%d: %s (is another simulator running? choose another port with the port key)",
+                    config.bindAddress, port, e.getMessage()));
+        }
+    }
+}

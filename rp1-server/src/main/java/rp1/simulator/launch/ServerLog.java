@@ -1,0 +1,142 @@
+package rp1.simulator.launch;
+
+import java.io.FileWriter;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.time.LocalTime;
+import java.time.format.DateTimeFormatter;
+import java.util.Locale;
+import java.util.function.DoubleSupplier;
+
+import rp1.rossum.RsLogInterface;
+
+/**
+ * The server's log (behavior.md section 3.9): lines {@code LEVEL h:mm:ss.SSS SSSS.mmm: MESSAGE}, where
+ * the second field is the wall clock (12-hour, no AM/PM) and the third the simulation time modulo
+ * 10000 s. Lines go to a file (flushed per line, so a crash loses nothing) and/or standard output.
+ * Levels: "X" important, "s" standard, "v" verbose (written only when verbosity is on).
+ *
+ * <p>When neither target is on, the server's own important lines ({@link #important}) still go to
+ * standard error: a server that stops because a client failed must say why somewhere. Loaded clients
+ * log into this log too ({@code dlcSetLog}).
+ */
+public final class ServerLog implements RsLogInterface {
+    private static final DateTimeFormatter WALL_CLOCK = DateTimeFormatter.ofPattern("h:mm:ss.SSS", Locale.ROOT);
+
+    private final PrintWriter file;
+    private final PrintStream standardOutput;
+    private final PrintStream standardError;
+    private volatile boolean verbose;
+    private volatile DoubleSupplier simTime = () -> 0.0;
+    private boolean closed;
+
+    private ServerLog(PrintWriter file, PrintStream standardOutput, PrintStream standardError, boolean verbose) {
+        this.file = file;
+        this.standardOutput = standardOutput;
+        this.standardError = standardError;
+        this.verbose = verbose;
+    }
+
+    /**
+     * Opens a log.
+     *
+     * @param fileName  the log file, created or truncated; null for none
+     * @param toSystemOut whether lines also go to standard output
+     * @param verbose   whether "v" lines are written
+     * @throws IOException if the file cannot be created
+     */
+    public static ServerLog open(String fileName, boolean toSystemOut, boolean verbose) throws IOException {
+        PrintWriter file = fileName == null ? null : new PrintWriter(new FileWriter(fileName, false));
+        return new ServerLog(file, toSystemOut ? System.out : null, System.err, verbose);
+    }
+
+    /** Where the simulation time in each line comes from (0 until the simulation exists). */
+    public void setSimTime(DoubleSupplier source) {
+        simTime = source;
+    }
+
+    /** Formats one line; {@code simTime} is reduced modulo 10000 s and truncated to milliseconds. */
+    static String format(String level, LocalTime wallClock, double simTime, String message) {
+        long millis = (long) Math.floor(simTime * 1000.0) % 10_000_000L;
+        if (millis < 0) {
+            millis += 10_000_000L;
+        }
+        return String.format(Locale.ROOT, "%s %s %04d.%03d: %s",
+                level, wallClock.format(WALL_CLOCK), millis / 1000, millis % 1000, message);
+    }
+
+    /**
+     * Writes a line. The simulation time is read before the log's lock is taken (it needs the
+     * scheduler's); the wall clock after, so that lines appear in wall-clock order.
+     */
+    @Override
+    public void logIt(String level, String message) {
+        line(level, message, false);
+    }
+
+    private void line(String level, String message, boolean important) {
+        double t = simTime.getAsDouble();
+        synchronized (this) {
+            write(format(level, LocalTime.now(), t, message), important);
+        }
+    }
+
+    /** Writes a line exactly as given (the memory figures at shutdown have no level or time). */
+    public synchronized void raw(String line) {
+        write(line, false);
+    }
+
+    private void write(String line, boolean important) {
+        if (closed) {
+            return;
+        }
+        if (file != null) {
+            file.println(line);
+            file.flush();
+        }
+        if (standardOutput != null) {
+            standardOutput.println(line);
+        } else if (important && file == null) {
+            standardError.println(line);
+        }
+    }
+
+    @Override
+    public void log(String message) {
+        logIt("s", message);
+    }
+
+    /** Writes one of the server's important ("X") lines; on standard error if there is no other target. */
+    public void important(String message) {
+        line("X", message, true);
+    }
+
+    @Override
+    public void verbose(String message) {
+        if (verbose) {
+            logIt("v", message);
+        }
+    }
+
+    @Override
+    public boolean getVerbosity() {
+        return verbose;
+    }
+
+    @Override
+    public void setVerbosity(boolean value) {
+        verbose = value;
+    }
+
+    /** Flushes and closes the file; later lines are dropped. */
+    public synchronized void close() {
+        closed = true;
+        if (file != null) {
+            file.close();
+        }
+        if (standardOutput != null) {
+            standardOutput.flush();
+        }
+    }
+}

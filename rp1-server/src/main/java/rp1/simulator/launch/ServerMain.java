@@ -1,0 +1,43 @@
+package rp1.simulator.launch;
+
+import java.nio.file.Path;
+import java.nio.file.Paths;
+
+/**
+ * What {@code rp1.Server.main} does: start a server in the working directory, stop it cleanly on
+ * Ctrl-C or SIGTERM (clients closed, log flushed), and return the exit status. A server that cannot
+ * start prints one line saying why on standard error.
+ */
+public final class ServerMain {
+    private ServerMain() {
+    }
+
+    /** Runs a server until it stops; returns the process's exit status. */
+    public static int run(String[] args) {
+        Path workingDirectory = Paths.get("").toAbsolutePath();
+        RunningServer server;
+        try {
+            server = ServerLauncher.start(args, workingDirectory);
+        } catch (StartupException e) {
+            System.err.println("rp1.Server: " + e.getMessage());
+            return e.getExitStatus();
+        }
+        Thread hook = new Thread(() -> stopQuietly(server), "shutdown hook");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            return server.awaitExit();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return stopQuietly(server);
+        }
+    }
+
+    private static int stopQuietly(RunningServer server) {
+        try {
+            return server.stop();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return ExitStatus.OK;
+        }
+    }
+}

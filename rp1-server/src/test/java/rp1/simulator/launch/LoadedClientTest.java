@@ -1,0 +1,121 @@
+package rp1.simulator.launch;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.OptionalInt;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Dynamically loaded clients (behavior.md section 3.4) and the exit conditions of headless runs:
+ * exitWhenClientsDone, maxSimulationTime, and failing clients.
+ */
+@Timeout(30)
+class LoadedClientTest {
+    private static final String DLC = "dlcName=" + TestDlc.class.getName();
+    private static final String HEADLESS_CI = "exitWhenClientsDone=true";
+    private static final String LOCKSTEP = "simulationSpeed=max";
+
+    @TempDir
+    Path dir;
+
+    @BeforeEach
+    void reset() {
+        TestDlc.reset();
+    }
+
+    private int runToTheEnd(String... lines) throws Exception {
+        RunningServer server = TestServer.start(dir, lines);
+        OptionalInt status = server.awaitExit(20, TimeUnit.SECONDS);
+        if (!status.isPresent()) {
+            server.stop();
+            throw new AssertionError("the server did not stop by itself:\n" + TestServer.log(dir));
+        }
+        return status.getAsInt();
+    }
+
+    @Test
+    void anInProcessClientIsCalledInTheOriginalsOrderAndTheServerExitsWhenItIsDone() throws Exception {
+        int status = runToTheEnd("dlcEnabled=true", DLC, "dlcSetIO=true", "dlcSetLog=true", HEADLESS_CI,
+                LOCKSTEP, "interlockEnabled=true", "enableNetworkClients=false");
+        assertEquals(ExitStatus.OK, status, TestServer.log(dir));
+        assertEquals(List.of("constructor", "setInputOutputStreams", "setLogger", "initialize", "run"), TestDlc.CALLS);
+        List<Double> beats = TestDlc.BEATS;
+        assertEquals(5, beats.size(), "beats: " + beats);
+        for (int k = 1; k <= 5; k++) {
+            assertEquals(0.1 * k, beats.get(k - 1), 1e-9, "lockstep: the clock started after initialize(), at 0");
+        }
+        String log = TestServer.log(dir);
+        assertTrue(log.matches("(?s).*\ns \\S+ 0000\\.000: TestDlc says hello\n.*"), "dlcSetLog: the client logs into the server log\n" + log);
+        assertTrue(log.contains("client 1 (in-process " + TestDlc.class.getName() + ") connected"), log);
+        assertTrue(log.contains("Every loaded client has finished"), log);
+    }
+
+    @Test
+    void aLoadedClientWithoutServerIoConnectsOverTheNetworkToTheActualPort() throws Exception {
+        int status = runToTheEnd("dlcEnabled=true", DLC, "dlcSetIO=false", HEADLESS_CI, "simulationSpeed=50");
+        assertEquals(ExitStatus.OK, status, TestServer.log(dir));
+        assertEquals(List.of("constructor", "setLogger", "initialize", "run"), TestDlc.CALLS);
+        assertEquals(5, TestDlc.BEATS.size());
+        assertTrue(TestServer.log(dir).matches("(?s).*client 1 \\(/127\\.0\\.0\\.1:\\d+\\) connected.*"), TestServer.log(dir));
+    }
+
+    @Test
+    void severalClientsMayBeLoadedAndTheServerWaitsForAllOfThem() throws Exception {
+        String two = "dlcName=" + TestDlc.class.getName() + "," + TestDlc.class.getName();
+        int status = runToTheEnd("dlcEnabled=true", two, HEADLESS_CI, LOCKSTEP, "interlockEnabled=true");
+        assertEquals(ExitStatus.OK, status, TestServer.log(dir));
+        assertEquals(10, TestDlc.BEATS.size());
+    }
+
+    @Test
+    void aClientWhoseInitializeFailsStopsTheServerWithOneLineAndANonZeroStatus() throws Exception {
+        int status = runToTheEnd("dlcEnabled=true", "dlcName=" + FailingDlc.class.getName());
+        assertEquals(ExitStatus.CLIENT_FAILED, status);
+        String log = TestServer.log(dir);
+        assertTrue(log.contains("X ") && log.contains("client " + FailingDlc.class.getName()
+                + ": initialize() failed: java.io.IOException: no robot today"), log);
+        assertFalse(log.contains("\tat "), "no stack dump");
+    }
+
+    @Test
+    void aFailingClientAmongSeveralMakesTheStatusNonZero() throws Exception {
+        int status = runToTheEnd("dlcEnabled=true", "dlcName=" + TestDlc.class.getName() + "," + FailingDlc.class.getName(),
+                HEADLESS_CI);
+        assertEquals(ExitStatus.CLIENT_FAILED, status);
+    }
+
+    @Test
+    void aMissingClassOrOneThatIsNotAClientIsAStartupError() {
+        StartupException missing = assertThrows(StartupException.class,
+                () -> TestServer.start(dir, "dlcEnabled=true", "dlcName=no.such.Robot"));
+        assertEquals("client class no.such.Robot not found on the class path (dlcName)", missing.getMessage());
+        assertEquals(ExitStatus.STARTUP_FAILED, missing.getExitStatus());
+        assertTrue(TestServer.log(dir).contains("Fatal error: client class no.such.Robot not found"));
+        StartupException notAClient = assertThrows(StartupException.class,
+                () -> TestServer.start(dir, "dlcEnabled=true", "dlcName=" + NotAClient.class.getName()));
+        assertTrue(notAClient.getMessage().endsWith("does not implement rp1.rossum.RsRunnable"), notAClient.getMessage());
+    }
+
+    @Test
+    void maxSimulationTimeStopsTheServerAtThatTime() throws Exception {
+        String tireless = "dlcName=" + TirelessDlc.class.getName();
+        int status = runToTheEnd("dlcEnabled=true", tireless, LOCKSTEP, "interlockEnabled=true", "maxSimulationTime=2.5");
+        assertEquals(ExitStatus.OK, status);
+        List<Double> beats = TestDlc.BEATS;
+        assertTrue(beats.size() >= 24 && beats.size() <= 25, "beats up to 2.5 s: " + beats.size());
+        assertTrue(beats.get(beats.size() - 1) <= 2.5 + 1e-9, String.valueOf(beats));
+        assertTrue(TestServer.log(dir).contains("maxSimulationTime 2.5 s reached"));
+        assertTrue(Arrays.asList(TestServer.log(dir).split("\n")).stream().anyMatch(l -> l.contains(" 0002.500: maxSimulationTime")));
+    }
+}
