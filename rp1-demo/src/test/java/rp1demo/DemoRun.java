@@ -11,7 +11,7 @@ import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsBody;
 import rp1.rossum.RsClient;
-import rp1.rossum.RsLogInterface;
+import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsRunnable;
 import rp1.rossum.RsTransform;
@@ -128,11 +128,15 @@ public final class DemoRun implements AutoCloseable {
     }
 
     /** The simulation's log: collects lines, each with the simulated time it was written at. */
-    private final class CapturedLog implements RsLogInterface {
+    private final class CapturedLog extends RsLogAdapter {
         /** -Drp1.demo.echo=true prints the demos' log lines as they come, for watching a test run. */
         private static final boolean ECHO = Boolean.getBoolean("rp1.demo.echo");
 
         private final StringBuilder lines = new StringBuilder();
+
+        CapturedLog() {
+            super(true);
+        }
 
         @Override
         public synchronized void logIt(String level, String message) {
@@ -142,25 +146,6 @@ public final class DemoRun implements AutoCloseable {
             if (ECHO) {
                 System.out.print(line);
             }
-        }
-
-        @Override
-        public void log(String message) {
-            logIt("s", message);
-        }
-
-        @Override
-        public void verbose(String message) {
-            logIt("v", message);
-        }
-
-        @Override
-        public boolean getVerbosity() {
-            return true;
-        }
-
-        @Override
-        public void setVerbosity(boolean value) {
         }
 
         synchronized String text() {

@@ -132,35 +132,17 @@ class BadInputTest {
     }
 
     /** A logger that keeps its lines in a list. */
-    static final class ListLogger implements RsLogInterface {
+    static final class ListLogger extends RsLogAdapter {
         private final List<String> lines;
 
         ListLogger(List<String> lines) {
+            super(true);
             this.lines = lines;
         }
 
         @Override
         public synchronized void logIt(String level, String message) {
             lines.add(level + " " + message);
-        }
-
-        @Override
-        public void log(String message) {
-            logIt("s", message);
-        }
-
-        @Override
-        public void verbose(String message) {
-            logIt("v", message);
-        }
-
-        @Override
-        public boolean getVerbosity() {
-            return true;
-        }
-
-        @Override
-        public void setVerbosity(boolean value) {
         }
     }
 }

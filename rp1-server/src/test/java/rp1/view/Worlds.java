@@ -12,7 +12,7 @@ import java.util.concurrent.TimeUnit;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
-import rp1.rossum.RsLogInterface;
+import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsPlan;
 import rp1.simulator.Simulation;
 import rp1.simulator.config.ConfigException;
@@ -54,30 +54,12 @@ final class Worlds {
     }
 
     /** A log that keeps its lines. */
-    static final class RecordingLog implements RsLogInterface {
+    static final class RecordingLog extends RsLogAdapter {
         private final List<String> lines = new ArrayList<>();
 
         @Override
         public synchronized void logIt(String level, String message) {
             lines.add(level + " " + message);
-        }
-
-        @Override
-        public void log(String message) {
-            logIt("s", message);
-        }
-
-        @Override
-        public void verbose(String message) {
-        }
-
-        @Override
-        public boolean getVerbosity() {
-            return false;
-        }
-
-        @Override
-        public void setVerbosity(boolean value) {
         }
 
         synchronized List<String> lines() {

@@ -8,6 +8,7 @@ import java.util.List;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
+import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsPlan;
 import rp1.simulator.InProcessClient;
@@ -124,26 +125,10 @@ public final class Scenario implements AutoCloseable {
         }
     }
 
-    static final RsLogInterface QUIET = new RsLogInterface() {
+    /** A log that drops everything. */
+    static final RsLogInterface QUIET = new RsLogAdapter() {
         @Override
         public void logIt(String level, String message) {
-        }
-
-        @Override
-        public void log(String message) {
-        }
-
-        @Override
-        public void verbose(String message) {
-        }
-
-        @Override
-        public boolean getVerbosity() {
-            return false;
-        }
-
-        @Override
-        public void setVerbosity(boolean value) {
         }
     };
 }
