@@ -92,8 +92,17 @@ class RobotsScenarioTest {
             ScenarioClient leaving = s.connect(new ScenarioClient(Bodies.round("leaving")));
             leaving.sendPlacementRequest("centre");
             leaving.await(RsPlacementEvent.class);
-            leaving.setInputOutputStreams(null, null);
-            s.close();
+            s.closeClient(0);
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (!s.simulation().getSessions().isEmpty() && System.nanoTime() < deadline) {
+                Thread.sleep(1);
+            }
+            ScenarioClient mover = s.connect(new ScenarioClient(Bodies.round("mover")));
+            mover.once(RsPlacementEvent.class, e -> mover.sendMotionRequest(new RsMotionRequest(2.0, 0.0, 3.0)));
+            mover.sendPlacementRequest("west");
+            RsMotionHaltedEvent h = mover.await(RsMotionHaltedEvent.class);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COMPLETION, h.causeOfHalt, "drove through where it stood");
+            assertEquals(7.0, h.x, 1e-9);
         }
     }
 }

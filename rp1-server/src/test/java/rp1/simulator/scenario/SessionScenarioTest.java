@@ -157,8 +157,12 @@ class SessionScenarioTest {
             leave.sendPlacementRequest("centre");
             leave.await(RsPlacementEvent.class);
             assertEquals(2, s.simulation().getWorld().getRobots().size());
-            leave.setInputOutputStreams(null, null);
             s.closeClient(1);
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (s.simulation().getSessions().size() > 1 && System.nanoTime() < deadline) {
+                Thread.sleep(1);
+            }
+            assertEquals(1, s.simulation().getSessions().size(), "the server noticed the client leave");
             stay.sendTimeoutRequest(1.0);
             stay.await(RsTimeoutEvent.class);
             assertEquals(1, s.simulation().getWorld().getRobots().size());
