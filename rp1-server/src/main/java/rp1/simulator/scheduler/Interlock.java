@@ -34,7 +34,11 @@ public final class Interlock {
 
             @Override
             public boolean closeInterlock(int interlock) {
-                return close(client, interlock);
+                boolean restarted = close(client, interlock);
+                if (restarted) {
+                    scheduler.runUntilIdle();
+                }
+                return restarted;
             }
 
             @Override
