@@ -9,7 +9,7 @@ import java.time.format.DateTimeFormatter;
 import java.util.Locale;
 import java.util.function.DoubleSupplier;
 
-import rp1.rossum.RsLogInterface;
+import rp1.rossum.RsLogAdapter;
 
 /**
  * The server's log (behavior.md section 3.9): lines {@code LEVEL h:mm:ss.SSS SSSS.mmm: MESSAGE}, where
@@ -21,13 +21,12 @@ import rp1.rossum.RsLogInterface;
  * standard error: a server that stops because a client failed must say why somewhere. Loaded clients
  * log into this log too ({@code dlcSetLog}).
  */
-public final class ServerLog implements RsLogInterface {
+public final class ServerLog extends RsLogAdapter {
     private static final DateTimeFormatter WALL_CLOCK = DateTimeFormatter.ofPattern("h:mm:ss.SSS", Locale.ROOT);
 
     private final PrintWriter file;
     private final PrintStream standardOutput;
     private final PrintStream standardError;
-    private volatile boolean verbose;
     private volatile DoubleSupplier simTime = () -> 0.0;
     private boolean closed;
 
@@ -35,7 +34,7 @@ public final class ServerLog implements RsLogInterface {
         this.file = file;
         this.standardOutput = standardOutput;
         this.standardError = standardError;
-        this.verbose = verbose;
+        setVerbosity(verbose);
     }
 
     /**
@@ -102,31 +101,9 @@ public final class ServerLog implements RsLogInterface {
         }
     }
 
-    @Override
-    public void log(String message) {
-        logIt("s", message);
-    }
-
     /** Writes one of the server's important ("X") lines; on standard error if there is no other target. */
     public void important(String message) {
         line("X", message, true);
-    }
-
-    @Override
-    public void verbose(String message) {
-        if (verbose) {
-            logIt("v", message);
-        }
-    }
-
-    @Override
-    public boolean getVerbosity() {
-        return verbose;
-    }
-
-    @Override
-    public void setVerbosity(boolean value) {
-        verbose = value;
     }
 
     /** Flushes and closes the file; later lines are dropped. */

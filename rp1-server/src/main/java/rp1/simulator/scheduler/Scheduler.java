@@ -29,7 +29,6 @@ public final class Scheduler {
     private boolean stopped;
     /** A task is running (on the dispatch loop or on a thread that restarted the clock). */
     private boolean executing;
-    private Thread loopThread;
 
     public Scheduler(SimClock clock) {
         this.clock = clock;
@@ -204,9 +203,6 @@ public final class Scheduler {
      * {@link #shutdown()}.
      */
     public void runLoop() {
-        synchronized (this) {
-            loopThread = Thread.currentThread();
-        }
         try {
             while (true) {
                 Entry e = awaitNext();
@@ -245,11 +241,6 @@ public final class Scheduler {
     public synchronized void shutdown() {
         stopped = true;
         notifyAll();
-    }
-
-    /** Whether the calling thread is the one running the dispatch loop. */
-    public synchronized boolean isSchedulerThread() {
-        return Thread.currentThread() == loopThread;
     }
 
     /** A queued task: immediate ones first, then by time, higher priority first, insertion order. */

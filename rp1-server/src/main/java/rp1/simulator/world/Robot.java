@@ -149,10 +149,6 @@ public final class Robot {
         pending = request;
     }
 
-    void clearPendingRequest() {
-        pending = null;
-    }
-
     boolean hasPendingRequest() {
         return pending != null;
     }
