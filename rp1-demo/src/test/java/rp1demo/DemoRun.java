@@ -15,7 +15,7 @@ import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsRunnable;
 import rp1.rossum.RsTransform;
-import rp1.simulator.InProcessClient;
+import rp1.simulator.net.InProcessClient;
 import rp1.simulator.Simulation;
 import rp1.simulator.SimulationSettings;
 import rp1.simulator.world.Robot;

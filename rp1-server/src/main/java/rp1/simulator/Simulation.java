@@ -3,36 +3,86 @@ package rp1.simulator;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import rp1.rossum.RsConnection;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsPlan;
 import rp1.rossum.event.RsMouseClickEvent;
+import rp1.simulator.scheduler.Input;
+import rp1.simulator.scheduler.InputQueue;
 import rp1.simulator.scheduler.Interlock;
 import rp1.simulator.scheduler.Scheduler;
+import rp1.simulator.scheduler.Task;
+import rp1.simulator.session.ClientInput;
 import rp1.simulator.session.ClientSession;
+import rp1.simulator.session.Heartbeats;
+import rp1.simulator.session.Request;
 import rp1.simulator.world.World;
 
 /**
  * A running simulation, headless: the world (floor plan and robots), the scheduler that advances it,
- * the interlock, and the client sessions. Transports (sockets, in-process pipes) attach clients with
- * {@link #attach}; a view observes the world through {@link World#addListener}; one thread runs
- * {@link #run()}.
+ * the inputs waiting for the next boundary, the interlock, and the client sessions. Transports attach
+ * clients with {@link #attach}; a view observes the world through {@link World#addListener} and the
+ * observer actions here, and reaches in only through inputs ({@link #mouseClick},
+ * {@link #removePaintTrails}); one thread runs {@link #run()} (see {@link Scheduler} for which threads
+ * may also run tasks).
  */
 public final class Simulation {
+    /** How long a transport thread may run tasks before leaving the rest to the dispatch loop. */
+    private static final long PUMP_BUDGET_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
+
+    /** How a client's connection reaches the simulation, which decides who runs the tasks its messages make due. */
+    public enum Link {
+        /** A reader thread of its own (in-process pipes): it runs the tasks due after each message itself. */
+        READER,
+        /**
+         * A thread shared with other clients (the network's selector): it runs the due tasks itself
+         * after each round of reading ({@link #pump()}).
+         */
+        SHARED_READER,
+        /**
+         * An in-process client whose handlers the simulation calls directly: its requests are inputs
+         * like any other, and it needs no interlock (a handler returning is the acknowledgement).
+         */
+        DIRECT
+    }
+
     private final SimulationSettings settings;
     private final Scheduler scheduler;
+    private final InputQueue inputs;
     private final Interlock interlock;
     private final World world;
+    private final Heartbeats heartbeats;
     private final RsLogInterface log;
     private final List<ClientSession> sessions = new CopyOnWriteArrayList<>();
+    private final AtomicInteger clientNumbers = new AtomicInteger();
+    private final ClientSession.Host host;
+    /** Robots still to be placed before the clock may run ({@code waitForClients}); 0 once it runs. */
+    private int waitingFor;
 
     public Simulation(RsPlan plan, SimulationSettings settings, RsLogInterface log) {
         this.settings = settings;
         this.log = log;
         this.scheduler = new Scheduler(settings.newClock());
+        this.inputs = new InputQueue(scheduler);
         this.interlock = settings.interlock ? new Interlock(scheduler) : null;
-        this.world = new World(plan, scheduler, settings.modelingInterval, new Random(settings.randomSeed));
+        this.world = new World(plan, scheduler, settings.modelingInterval, new Random(settings.randomSeed),
+                settings.robotsInteract);
+        this.heartbeats = new Heartbeats(scheduler);
+        this.host = new SessionHost();
+        scheduler.setFailureHandler(e -> log.logIt("X", "A simulation task failed; the simulation goes on: "
+                + describe(e)));
+        world.setPlacementListener(this::placedRobotsChanged);
+        if (settings.isLockstep()) {
+            scheduler.hold();
+        }
+    }
+
+    private static String describe(Throwable t) {
+        StackTraceElement[] trace = t.getStackTrace();
+        return t + (trace.length > 0 ? " at " + trace[0] : "");
     }
 
     public SimulationSettings getSettings() {
@@ -47,6 +97,11 @@ public final class Simulation {
         return world;
     }
 
+    /** The inputs waiting for the next boundary (a recording listens to them). */
+    public InputQueue getInputs() {
+        return inputs;
+    }
+
     /** The interlock, or null when it is off. */
     public Interlock getInterlock() {
         return interlock;
@@ -56,45 +111,68 @@ public final class Simulation {
         return log;
     }
 
-    /** The current simulation time. */
+    /** The current simulation time, brought up to date with the wall clock. */
     public double getSimTime() {
         return scheduler.now();
     }
 
     /**
-     * Attaches a client connection (after its handshake, if any): its requests drive the simulation
-     * and it receives its robot's events. Start the connection's {@code run()} afterwards.
+     * Attaches a client connection (after its handshake, if any): its requests become inputs of the
+     * simulation and it receives its robot's events. For a {@link Link#READER} or
+     * {@link Link#SHARED_READER} link start the connection's reading afterwards; for
+     * {@link Link#DIRECT} connect the client to it first.
      */
-    public ClientSession attach(RsConnection connection, String description) {
+    public ClientSession attach(RsConnection connection, String description, Link link) {
         connection.setLogger(log);
-        ClientSession session = new ClientSession(world, scheduler, interlock, connection, log, description);
+        ClientSession session = new ClientSession(clientNumbers.incrementAndGet(), description, connection, host);
         sessions.add(session);
-        session.setCloseListener(() -> sessions.remove(session));
+        session.setDepartureListener(() -> sessions.remove(session));
+        if (interlock != null && link != Link.DIRECT) {
+            Runnable afterRestart = link == Link.READER ? this::pump : () -> { };
+            connection.addInterlock(interlock.forClient(session, afterRestart));
+        }
+        connection.setProtocolShutdownHandler(() -> {
+            if (interlock != null) {
+                interlock.release(session);
+            }
+            session.connectionClosed();
+            if (link == Link.READER) {
+                pump();
+            }
+        });
         return session;
     }
 
-    /** The sessions of the clients currently connected. */
+    /** The sessions of the clients currently connected (read it from any thread). */
     public List<ClientSession> getSessions() {
         return sessions;
     }
 
+    /**
+     * Runs what is due on the calling thread for a moment, if no other thread is running tasks; the
+     * dispatch loop takes over what remains. Transport threads call it after handing over messages.
+     */
+    public void pump() {
+        scheduler.pump(PUMP_BUDGET_NANOS);
+    }
+
     /** Starts the clock at simulation time 0 and runs tasks until {@link #shutdown()}. */
     public void run() {
-        scheduler.startClock();
+        startClock();
         scheduler.runLoop();
     }
 
     /**
      * Runs tasks until {@link #shutdown()}, but with the clock stopped until {@link #startClock()}:
-     * clients can connect and send their first requests, all stamped at time 0, before anything moves.
+     * clients can connect and send their first requests, all applied at time 0, before anything moves.
      */
     public void runPaused() {
         scheduler.runLoop();
     }
 
-    /** Starts (or restarts) the simulation clock. */
+    /** Starts the clock (at time 0). */
     public void startClock() {
-        scheduler.startClock();
+        scheduler.begin();
     }
 
     /** Stops the scheduler; {@link #run()} returns. */
@@ -103,22 +181,113 @@ public final class Simulation {
     }
 
     /**
+     * Holds simulated time at 0 until {@code robots} robots are on the floor ({@code waitForClients});
+     * work due at time 0 (their placements) still runs. Call before the clock starts.
+     */
+    public void waitForRobots(int robots) {
+        if (robots > 0) {
+            waitingFor = robots;
+            scheduler.hold();
+        }
+    }
+
+    /**
+     * The number of robots on the floor changed. Time is held while clients are awaited and, in
+     * lockstep, while no robot is on the floor (a world without robots has nothing to simulate, and a
+     * lockstep clock would otherwise race to the next timed task).
+     */
+    private void placedRobotsChanged(int placed) {
+        if (waitingFor > 0 && placed >= waitingFor) {
+            waitingFor = 0;
+        }
+        boolean hold = waitingFor > 0 || (settings.isLockstep() && placed == 0);
+        if (hold) {
+            scheduler.hold();
+        } else {
+            scheduler.release();
+        }
+    }
+
+    /**
+     * At {@code time}, after everything else due then, stops the scheduler and runs {@code action} (on
+     * the thread running tasks): {@code maxSimulationTime}.
+     */
+    public void stopAt(double time, Runnable action) {
+        scheduler.observeAt(time, t -> {
+            scheduler.shutdown();
+            action.run();
+        });
+    }
+
+    /**
+     * Runs {@code observer} at multiples of {@code period} of simulated time at which the world has
+     * changed since it last ran, after every model task due then (pictures during a run).
+     *
+     * @return what stops the observations
+     */
+    public AutoCloseable observeChanges(double period, Task observer) {
+        ChangeObserver o = new ChangeObserver(world, scheduler, period, observer);
+        return o::close;
+    }
+
+    /**
      * A mouse press on the view at world point (x, y): every client with a robot that subscribed to
-     * mouse clicks gets the event, stamped with the time of the press.
+     * mouse clicks gets the event, stamped with the time the press is applied.
      */
     public void mouseClick(int button, int clickCount, double x, double y) {
-        RsMouseClickEvent e = new RsMouseClickEvent(scheduler.now(), button, clickCount, x, y);
-        scheduler.scheduleImmediate(t -> {
+        inputs.submit(new ViewInput("mouse click", t -> {
+            RsMouseClickEvent e = new RsMouseClickEvent(t, button, clickCount, x, y);
             for (ClientSession s : sessions) {
                 if (s.getRobot() != null) {
                     s.sendIfSubscribed(e);
                 }
             }
-        });
+        }));
     }
 
     /** Clears every paint trail (the view's "Remove Paint Trails"). */
     public void removePaintTrails() {
-        scheduler.scheduleImmediate(t -> world.removePaintTrails());
+        inputs.submit(new ViewInput("remove paint trails", t -> world.removePaintTrails()));
+    }
+
+    /** An input from the view (source 0: applied before the clients' inputs of the same boundary). */
+    private record ViewInput(String name, Task action) implements Input {
+        @Override
+        public int source() {
+            return 0;
+        }
+
+        @Override
+        public void apply(double simTime) {
+            action.run(simTime);
+        }
+    }
+
+    /** What the sessions work with. */
+    private final class SessionHost implements ClientSession.Host {
+        @Override
+        public World world() {
+            return world;
+        }
+
+        @Override
+        public Scheduler scheduler() {
+            return scheduler;
+        }
+
+        @Override
+        public Heartbeats heartbeats() {
+            return heartbeats;
+        }
+
+        @Override
+        public RsLogInterface log() {
+            return log;
+        }
+
+        @Override
+        public void submit(ClientSession session, Request request) {
+            inputs.submit(new ClientInput(session, request));
+        }
     }
 }

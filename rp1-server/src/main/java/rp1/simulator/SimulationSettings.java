@@ -5,7 +5,8 @@ import rp1.simulator.scheduler.TimeSource;
 
 /**
  * What a simulation needs to know besides its floor plan: how often motion is evaluated, how its
- * clock runs, whether events interlock with clients, and the seed of its one random source.
+ * clock runs, whether events interlock with clients, the seed of its one random source, and whether
+ * robots meet each other. Immutable.
  */
 public final class SimulationSettings {
     /** Seconds between motion evaluations. */
@@ -15,9 +16,16 @@ public final class SimulationSettings {
     public final boolean interlock;
     public final long randomSeed;
     public final TimeSource wallClock;
+    /** Whether robots collide with, sense and block the placement of one another (RP1 0.60: no). */
+    public final boolean robotsInteract;
 
     public SimulationSettings(double modelingInterval, double speed, boolean interlock, long randomSeed,
                               TimeSource wallClock) {
+        this(modelingInterval, speed, interlock, randomSeed, wallClock, true);
+    }
+
+    private SimulationSettings(double modelingInterval, double speed, boolean interlock, long randomSeed,
+                               TimeSource wallClock, boolean robotsInteract) {
         if (!(modelingInterval > 0.0)) {
             throw new IllegalArgumentException("modelingInterval must be positive, got " + modelingInterval);
         }
@@ -29,6 +37,12 @@ public final class SimulationSettings {
         this.interlock = interlock;
         this.randomSeed = randomSeed;
         this.wallClock = wallClock;
+        this.robotsInteract = robotsInteract;
+    }
+
+    /** The same settings with robots meeting each other or not ({@code robotsInteract}). */
+    public SimulationSettings withRobotsInteract(boolean interact) {
+        return new SimulationSettings(modelingInterval, speed, interlock, randomSeed, wallClock, interact);
     }
 
     /**

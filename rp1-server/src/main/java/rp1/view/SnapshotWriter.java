@@ -10,10 +10,8 @@ import java.util.concurrent.TimeUnit;
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
 import rp1.simulator.scheduler.Scheduler;
-import rp1.simulator.scheduler.Task;
 import rp1.simulator.snapshot.WorldSnapshot;
 import rp1.simulator.world.World;
-import rp1.simulator.world.WorldListener;
 
 /**
  * Writes PNG pictures of the world (plan, trails, robots) without any display: with an interval,
@@ -21,14 +19,14 @@ import rp1.simulator.world.WorldListener;
  * {@code NAME-TTTT.TTT.EXT} after the file name given (e.g. {@code run-0012.500.png} for
  * {@code run.png} at 12.5 s); and one at {@link #close()}, under the file name itself.
  *
- * <p>The pictures are snapshots taken by a task on the scheduler thread, run after every other task
- * due at the same time (so a picture shows everything that happened up to its time). The task
- * sends nothing and changes nothing; it is queued only while the world changes, so a world at rest
- * is not kept busy, and a lockstep clock is never driven forward by pictures alone. Drawing and
- * encoding happen on a writer thread; should it fall behind by more than a few pictures, the
- * scheduler thread draws the next one itself, which can slow a paced simulation but never change it.
+ * <p>The pictures are snapshots taken by an observer of the simulation
+ * ({@link Simulation#observeChanges}): on the thread running tasks, after every model task due at the
+ * same time (so a picture shows everything that happened up to its time), and only at times by which
+ * the world has changed, so a world at rest is not kept busy. Drawing and encoding happen on a writer
+ * thread; should it fall behind by more than a few pictures, the thread running tasks draws the next
+ * one itself, which can slow a paced simulation but never change it.
  */
-public final class SnapshotWriter implements WorldListener, AutoCloseable {
+public final class SnapshotWriter implements AutoCloseable {
     private static final int QUEUED_PICTURES = 4;
     private static final long CLOSE_WAIT_SECONDS = 60;
 
@@ -39,9 +37,7 @@ public final class SnapshotWriter implements WorldListener, AutoCloseable {
     private final double interval;
     private final RsLogInterface log;
     private final ThreadPoolExecutor writer;
-    private final Task picture = this::picture;
-    private boolean changed;
-    private boolean armed;
+    private final AutoCloseable observation;
     private boolean closed;
 
     /**
@@ -66,9 +62,7 @@ public final class SnapshotWriter implements WorldListener, AutoCloseable {
                     t.setDaemon(true);
                     return t;
                 }, new ThreadPoolExecutor.CallerRunsPolicy());
-        if (interval > 0.0) {
-            world.addListener(this);
-        }
+        this.observation = interval > 0.0 ? simulation.observeChanges(interval, this::picture) : () -> { };
     }
 
     /** The file name of the picture at {@code simTime}: the time inserted before the extension. */
@@ -80,28 +74,11 @@ public final class SnapshotWriter implements WorldListener, AutoCloseable {
         return file.resolveSibling(String.format(Locale.ROOT, "%s-%08.3f%s", stem, simTime, extension));
     }
 
-    /** Arms the picture task at the next multiple of the interval, unless it is already on its way. */
-    @Override
-    public synchronized void worldChanged(World w, double simTime) {
-        changed = true;
-        if (armed || closed) {
-            return;
-        }
-        armed = true;
-        double now = Double.isNaN(simTime) ? scheduler.now() : simTime;
-        scheduler.schedule(Math.ceil(now / interval) * interval, Scheduler.HEARTBEAT, picture);
-    }
-
-    /** Scheduler thread: a picture if anything changed since the last one, and the next one queued. */
+    /** An interval picture, on the thread running tasks. */
     private synchronized void picture(double simTime) {
-        if (!changed || closed) {
-            armed = false;
-            return;
+        if (!closed) {
+            submit(WorldSnapshot.of(world, simTime), fileAt(file, simTime));
         }
-        changed = false;
-        submit(WorldSnapshot.of(world, simTime), fileAt(file, simTime));
-        long index = Math.round(simTime / interval);
-        scheduler.schedule((index + 1) * interval, Scheduler.HEARTBEAT, picture);
     }
 
     private void submit(WorldSnapshot snapshot, Path target) {
@@ -128,9 +105,12 @@ public final class SnapshotWriter implements WorldListener, AutoCloseable {
             }
             closed = true;
         }
-        world.removeListener(this);
-        scheduler.cancel(picture);
-        submit(WorldSnapshot.of(world, scheduler.getClock().getSimTime()), file);
+        try {
+            observation.close();
+        } catch (Exception e) {
+            log.log("Could not stop the interval pictures: " + e);
+        }
+        submit(WorldSnapshot.of(world, scheduler.recordedTime()), file);
         writer.shutdown();
         try {
             if (!writer.awaitTermination(CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {

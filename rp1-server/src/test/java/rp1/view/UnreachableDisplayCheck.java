@@ -31,6 +31,7 @@ public final class UnreachableDisplayCheck {
             }
             System.out.println("logged: " + lines.get(1));
             ScenarioClient c = s.connect(new ScenarioClient(ClientZero.build()));
+            c.sendPlacementRequest("home"); // at max speed, time passes only while a robot is on the floor
             c.sendTimeoutRequest(2.0);
             c.await(RsTimeoutEvent.class);
             view.close();

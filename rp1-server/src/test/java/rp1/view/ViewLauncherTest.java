@@ -25,6 +25,7 @@ class ViewLauncherTest {
             assertFalse(view.hasWindow());
             assertFalse(view.writesPictures());
             ScenarioClient c = s.connect(new ScenarioClient(ClientZero.build()));
+            c.sendPlacementRequest("home"); // at max speed, time passes only while a robot is on the floor
             c.sendTimeoutRequest(1.0);
             assertEquals(1.0, c.await(RsTimeoutEvent.class).simTime, "the simulation runs on");
             view.close();

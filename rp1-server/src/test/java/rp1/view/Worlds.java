@@ -46,10 +46,10 @@ final class Worlds {
         return ServerConfig.from(p, "test", null);
     }
 
-    /** A snapshot taken on the scheduler thread (whose clock must be running), waiting up to 10 s. */
+    /** A snapshot taken on the thread running tasks (whose clock must be running), waiting up to 10 s. */
     static WorldSnapshot capture(Simulation simulation) throws Exception {
         CompletableFuture<WorldSnapshot> f = new CompletableFuture<>();
-        simulation.getScheduler().scheduleImmediate(t -> f.complete(WorldSnapshot.of(simulation.getWorld(), t)));
+        simulation.getScheduler().observeNow(t -> f.complete(WorldSnapshot.of(simulation.getWorld(), t)));
         return f.get(10, TimeUnit.SECONDS);
     }
 

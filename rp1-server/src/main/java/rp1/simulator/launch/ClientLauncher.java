@@ -10,7 +10,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import rp1.rossum.RsClient;
 import rp1.rossum.RsProperties;
-import rp1.simulator.InProcessClient;
+import rp1.simulator.net.InProcessClient;
 import rp1.simulator.Simulation;
 import rp1.simulator.config.ServerConfig;
 import rp1.simulator.net.ClientConnection;

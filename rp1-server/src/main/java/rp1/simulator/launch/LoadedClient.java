@@ -7,7 +7,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
 import rp1.rossum.RsRunnable;
-import rp1.simulator.InProcessClient;
+import rp1.simulator.net.InProcessClient;
 
 /**
  * One dynamically loaded client (behavior.md section 3.4): an {@link RsRunnable} created from a class

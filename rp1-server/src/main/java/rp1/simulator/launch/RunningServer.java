@@ -10,7 +10,6 @@ import rp1.simulator.Simulation;
 import rp1.simulator.config.ServerConfig;
 import rp1.simulator.net.ClientListener;
 import rp1.simulator.net.ClientRegistry;
-import rp1.simulator.scheduler.Scheduler;
 
 /**
  * A server that has started: its threads (scheduler, listener, a reader and a writer per client, one
@@ -110,9 +109,7 @@ public final class RunningServer {
         if (Double.isInfinite(max)) {
             return;
         }
-        // Heartbeat priority: the events due at exactly that time still go out first.
-        parts.simulation.getScheduler().schedule(max, Scheduler.HEARTBEAT, t -> {
-            parts.simulation.shutdown();
+        parts.simulation.stopAt(max, () -> {
             parts.log.log("maxSimulationTime " + max + " s reached");
             requestStop(ExitStatus.OK);
         });

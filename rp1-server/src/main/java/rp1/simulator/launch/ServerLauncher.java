@@ -122,15 +122,8 @@ public final class ServerLauncher {
                 ? SimulationSettings.lockstep(config.modelingInterval, seed)
                 : SimulationSettings.paced(config.modelingInterval, config.simulationSpeed, config.interlockEnabled, seed);
         Simulation simulation = new Simulation(plan, settings, log);
-        log.setSimTime(() -> recordedSimTime(simulation));
+        log.setSimTime(simulation.getScheduler()::recordedTime);
         return simulation;
-    }
-
-    /** The scheduler's last recorded time (not brought up to date with the wall clock), as the original logs it. */
-    private static double recordedSimTime(Simulation simulation) {
-        synchronized (simulation.getScheduler()) {
-            return simulation.getScheduler().getClock().getSimTime();
-        }
     }
 
     private static ClientListener listen(ServerConfig config, LaunchOptions options, Simulation simulation,

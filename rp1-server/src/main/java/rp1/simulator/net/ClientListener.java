@@ -132,7 +132,7 @@ public final class ClientListener {
             handshakeFailed(channel, c, e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
             return;
         }
-        simulation.attach(c, description);
+        simulation.attach(c, description, Simulation.Link.READER);
         log.log(description + " connected (" + c.getIdentity() + ")");
         c.run();
     }

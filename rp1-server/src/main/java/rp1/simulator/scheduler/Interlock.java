@@ -6,26 +6,33 @@ import java.util.Map;
 import rp1.rossum.RsInterlock;
 
 /**
- * The interlock (behavior.md section 4.5): every event sent to a client stops the simulation clock
- * and carries a new number from one counter shared by the whole simulation; the clock runs again once
- * the newest event has been acknowledged.
+ * The interlock (docs/behavior.md section 4.5): every event sent to a client over a stream stops the
+ * simulation clock and carries a new number from one counter shared by the whole simulation; the clock
+ * runs again once the newest event has been acknowledged.
  *
  * <p>With several clients this keeps one outstanding number per client and restarts the clock only
  * when every client has acknowledged the newest event it was sent (RP1 0.60 restarted it on the
  * newest number overall, letting time run while another client was still busy). With one client the
- * two rules are the same. A client that leaves releases whatever it still held.
+ * two rules are the same. A client that leaves releases whatever it still held. Clients whose handlers
+ * the simulation calls directly need no interlock: the call returning is the acknowledgement.
  */
 public final class Interlock {
     private final Scheduler scheduler;
     private final Map<Object, Integer> pending = new HashMap<>();
     private int counter;
 
+    /** An interlock on {@code scheduler}'s clock. */
     public Interlock(Scheduler scheduler) {
         this.scheduler = scheduler;
     }
 
-    /** The view of this interlock a client's connection uses ({@code RsConnection.addInterlock}). */
-    public RsInterlock forClient(Object client) {
+    /**
+     * The view of this interlock a client's connection uses ({@code RsConnection.addInterlock}).
+     *
+     * @param afterRestart run on the acknowledging thread when an acknowledgement restarted the clock
+     *                     (a reader thread then runs the tasks due itself)
+     */
+    public RsInterlock forClient(Object client, Runnable afterRestart) {
         return new RsInterlock() {
             @Override
             public int openInterlock() {
@@ -36,7 +43,7 @@ public final class Interlock {
             public boolean closeInterlock(int interlock) {
                 boolean restarted = close(client, interlock);
                 if (restarted) {
-                    scheduler.runUntilIdle();
+                    afterRestart.run();
                 }
                 return restarted;
             }
@@ -71,18 +78,20 @@ public final class Interlock {
         return restartIfNonePending();
     }
 
-    /** {@code client} left: whatever it held is released. */
-    public synchronized void release(Object client) {
-        if (pending.remove(client) != null) {
-            restartIfNonePending();
-        }
+    /**
+     * {@code client} left: whatever it held is released.
+     *
+     * @return whether the clock was restarted
+     */
+    public synchronized boolean release(Object client) {
+        return pending.remove(client) != null && restartIfNonePending();
     }
 
     private boolean restartIfNonePending() {
         if (!pending.isEmpty()) {
             return false;
         }
-        scheduler.startClock();
+        scheduler.resumeClock();
         return true;
     }
 

@@ -1,169 +1,322 @@
 package rp1.simulator.scheduler;
 
-import java.util.HashMap;
-import java.util.Map;
-import java.util.TreeSet;
+import java.util.ArrayDeque;
+import java.util.PriorityQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Consumer;
 
 /**
- * The simulation's task queue and dispatch loop (behavior.md sections 4.1 and 4.2). Tasks run one at
- * a time, in order of time, then priority (higher first: ordinary tasks 1, heartbeats 0, so at equal
- * times heartbeats come last), then insertion sequence. Immediate tasks have time 0 and so precede
- * every timed task. A task object is in the queue at most once.
+ * The simulation's task queue and the right to run it (docs/behavior.md sections 4.1 and 4.2).
  *
- * <p>Threads: request readers queue tasks and read the current time {@link #now()}; the interlock
- * stops and starts the clock; one thread runs {@link #runLoop()} (or a test calls {@link #runNext()}).
- * All state is guarded by this object's monitor; tasks run outside it.
+ * <p><b>Order.</b> Immediate tasks first, in the order queued; then timed tasks by time, then priority
+ * (higher first), then the order queued. Model tasks use {@link #NORMAL} or {@link #LATE} (heartbeats,
+ * which come after every ordinary task due at the same time). Observers ({@link #observeAt},
+ * {@link #observeNow}: pictures, the time limit) come after every model task due at their time, change
+ * nothing the clients can see, and are not counted in {@link #modelTasksRun()}, so a run observed
+ * differently is the same run.
+ *
+ * <p><b>Inputs and boundaries.</b> What reaches the simulation from outside (client requests, mouse
+ * clicks) is not applied where it arrives: the arriving thread queues it and calls
+ * {@link #inputsArrived()}, and the thread running tasks applies it at the next boundary between two
+ * tasks, through the {@link Boundary}, stamped with the current time. So every change to the model
+ * happens on the thread that runs tasks, at a point of the task sequence that can be recorded. Inputs
+ * are applied before the run {@link #begin() begins} too (at time 0: clients connect and send their
+ * first requests before anything moves), but not while the interlock has stopped the clock; those that
+ * arrived while it was stopped (a client's answers to the event it was handling) are stamped with the
+ * time it stopped at, before a paced clock catches up with the wall time the client took.
+ *
+ * <p><b>Threads.</b> One thread at a time holds the right to run tasks and cross boundaries: the
+ * dispatch loop ({@link #runLoop()}), or any thread that calls {@link #pump(long)} and finds the right
+ * free (a client's reader that has just released the interlock runs the next task itself, saving a
+ * thread hand-off per exchange), or a test calling {@link #runNext()}. Handing the right over goes
+ * through this scheduler's lock, so each holder sees everything the previous one did. Queuing, the
+ * clock's stop and resume, and {@link #now()} may be called from any thread.
  */
 public final class Scheduler {
     /** Priority of ordinary tasks. */
     public static final int NORMAL = 1;
-    /** Priority of heartbeats: last among tasks due at the same time. */
-    public static final int HEARTBEAT = 0;
-    /** The original re-checks its queue at least this often while idle. */
-    private static final long IDLE_RECHECK_MILLIS = 5000;
+    /** Priority of heartbeats: after every {@link #NORMAL} task due at the same time. */
+    public static final int LATE = 0;
+    /** Observers: after every model task due at the same time. */
+    private static final int OBSERVER = -1;
+    /** The dispatch loop re-checks its queue at least this often while idle. */
+    private static final long IDLE_RECHECK_NANOS = TimeUnit.SECONDS.toNanos(5);
+
+    /** Applies the inputs that arrived since the last boundary. */
+    @FunctionalInterface
+    public interface Boundary {
+        /** Called between two tasks by the thread that runs them; {@code simTime} is the current time. */
+        void cross(double simTime);
+    }
+
+    private enum Step { TASK, BOUNDARY, NONE }
 
     private final SimClock clock;
-    private final TreeSet<Entry> queue = new TreeSet<>();
-    private final Map<Task, Entry> queued = new HashMap<>();
+    private final ReentrantLock lock = new ReentrantLock();
+    private final Condition workAvailable = lock.newCondition();
+    private final ArrayDeque<Entry> immediate = new ArrayDeque<>();
+    private final PriorityQueue<Entry> timed = new PriorityQueue<>();
+    private Boundary boundary;
+    private Consumer<RuntimeException> failureHandler = e -> {
+        throw e;
+    };
     private long sequence;
-    private boolean stopped;
-    /** A task is running (on the dispatch loop or on a thread that restarted the clock). */
-    private boolean executing;
+    private int size;
+    private boolean inputsPending;
+    /** Inputs arrived while the interlock had stopped the clock: answers to an event, stamped with its time. */
+    private boolean inputsWhileStopped;
+    private boolean shutDown;
+    /** The thread that holds the right to run tasks, or null. */
+    private Thread executor;
+    private volatile long modelTasksRun;
 
     public Scheduler(SimClock clock) {
         this.clock = clock;
     }
 
-    public SimClock getClock() {
-        return clock;
+    /** Where inputs are applied between tasks. Set once, before anything runs. */
+    public void setBoundary(Boundary boundary) {
+        this.boundary = boundary;
     }
 
-    /**
-     * Queues {@code task} at {@code time}. If the same task object is already queued nothing changes
-     * (the recycled motion task relies on this).
-     *
-     * @return false if the task was already queued
-     */
-    public synchronized boolean schedule(double time, int priority, Task task) {
-        return enqueue(false, time, priority, task);
+    /** What happens when a task throws: by default the exception goes up to whoever runs the task. */
+    public void setFailureHandler(Consumer<RuntimeException> handler) {
+        this.failureHandler = handler;
     }
 
-    /** Queues {@code task} to run before every timed task, at the then-current time. */
-    public synchronized boolean scheduleImmediate(Task task) {
-        return enqueue(true, 0.0, NORMAL, task);
+    public boolean isLockstep() {
+        return clock.isLockstep();
     }
 
-    private boolean enqueue(boolean immediate, double time, int priority, Task task) {
-        if (queued.containsKey(task)) {
-            return false;
+    /** Simulated seconds per wall second (infinite in lockstep). */
+    public double getSpeed() {
+        return clock.getSpeed();
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Queuing.
+
+    /** Queues a model task at {@code time}; returns its handle. */
+    public TaskHandle schedule(double time, int priority, Task task) {
+        return enqueue(false, time, priority, true, task);
+    }
+
+    /** Queues a model task to run before every timed task, stamped {@code stamp}. */
+    public TaskHandle scheduleImmediate(double stamp, Task task) {
+        return enqueue(true, stamp, NORMAL, true, task);
+    }
+
+    /** Queues an observer to run at {@code time}, after every model task due then. */
+    public TaskHandle observeAt(double time, Task observer) {
+        return enqueue(false, time, OBSERVER, false, observer);
+    }
+
+    /** Queues an observer to run before the next timed task, at the current time. */
+    public TaskHandle observeNow(Task observer) {
+        lock.lock();
+        try {
+            return enqueue(true, clock.update(horizon()), OBSERVER, false, observer);
+        } finally {
+            lock.unlock();
         }
-        Entry e = new Entry(immediate, time, priority, sequence++, task);
-        queue.add(e);
-        queued.put(task, e);
-        // The loop only needs waking if it can run the new task sooner than what it waits for: with
-        // the clock stopped (the interlock is open) it waits for the restart, which wakes it anyway.
-        if (clock.isRunning() && queue.first() == e) {
-            notifyAll();
-        }
-        return true;
     }
 
-    /** Removes {@code task} from the queue; returns whether it was queued. */
-    public synchronized boolean cancel(Task task) {
-        Entry e = queued.remove(task);
-        if (e == null) {
-            return false;
+    private TaskHandle enqueue(boolean isImmediate, double time, int priority, boolean model, Task task) {
+        lock.lock();
+        try {
+            Entry e = new Entry(isImmediate, time, priority, sequence++, model, task);
+            if (isImmediate) {
+                immediate.addLast(e);
+            } else {
+                timed.add(e);
+            }
+            size++;
+            signalIfIdle();
+            return e;
+        } finally {
+            lock.unlock();
         }
-        queue.remove(e);
-        notifyAll();
-        return true;
-    }
-
-    /** Whether {@code task} is waiting in the queue. */
-    public synchronized boolean isScheduled(Task task) {
-        return queued.containsKey(task);
     }
 
     /** The number of queued tasks. */
-    public synchronized int size() {
-        return queue.size();
-    }
-
-    /**
-     * The current simulation time, brought up to date with the wall clock ("U" in the spec): what
-     * request handlers stamp their tasks with.
-     */
-    public synchronized double now() {
-        return clock.update(horizon());
-    }
-
-    /** Time of the first queued timed task, or infinity. */
-    private double horizon() {
-        for (Entry e : queue) {
-            if (!e.immediate) {
-                return e.time;
-            }
+    public int size() {
+        lock.lock();
+        try {
+            return size;
+        } finally {
+            lock.unlock();
         }
-        return Double.POSITIVE_INFINITY;
     }
 
-    /** Starts the clock (at simulation start, and when the interlock is released). */
-    public synchronized void startClock() {
-        clock.start();
-        notifyAll();
+    /** Time of the first queued timed task, or infinity. Holds the lock. */
+    private double horizon() {
+        Entry e = peekTimed();
+        return e == null ? Double.POSITIVE_INFINITY : e.time;
     }
 
-    /** Freezes the clock (the interlock is open); no task runs until it is started again. */
-    public synchronized void stopClock() {
-        clock.stop(horizon());
+    private Entry peekTimed() {
+        Entry e = timed.peek();
+        while (e != null && e.cancelled) {
+            timed.poll();
+            e = timed.peek();
+        }
+        return e;
     }
 
-    public synchronized boolean isClockRunning() {
-        return clock.isRunning();
+    private Entry peekImmediate() {
+        Entry e = immediate.peekFirst();
+        while (e != null && e.cancelled) {
+            immediate.pollFirst();
+            e = immediate.peekFirst();
+        }
+        return e;
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // The clock.
+
+    /**
+     * The current simulation time, brought up to date with the wall clock ("U" in the spec). Inputs
+     * are stamped with it at the boundary where they are applied.
+     */
+    public double now() {
+        lock.lock();
+        try {
+            return clock.update(horizon());
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** The time last recorded, without consulting the wall clock (what log lines show). */
+    public double recordedTime() {
+        lock.lock();
+        try {
+            return clock.getSimTime();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Begins the run: the clock starts at the current time (0 for a new simulation). */
+    public void begin() {
+        lock.lock();
+        try {
+            clock.begin();
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** The interlock opened: time freezes and no task runs until {@link #resumeClock()}. */
+    public void stopClock() {
+        lock.lock();
+        try {
+            clock.stop(horizon());
+        } finally {
+            lock.unlock();
+        }
     }
 
     /**
-     * Runs the next task if one may run now, without waiting: the clock must be running and, for a
-     * paced clock, the task due. Lockstep simulations and tests drive the scheduler with this.
+     * The interlock closed. Due work is not started here: the caller runs it ({@link #pump(long)}), or
+     * whoever holds the right to run tasks finds it when it lets go.
+     */
+    public void resumeClock() {
+        lock.lock();
+        try {
+            clock.resume();
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Whether tasks may run: the run has begun and the interlock is closed. */
+    public boolean isClockRunning() {
+        lock.lock();
+        try {
+            return clock.canRun();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Time may not advance until {@link #release()}; tasks and inputs due now still run. */
+    public void hold() {
+        lock.lock();
+        try {
+            clock.hold();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Ends a {@link #hold()}. */
+    public void release() {
+        lock.lock();
+        try {
+            clock.release();
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    public boolean isHeld() {
+        lock.lock();
+        try {
+            return clock.isHeld();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Running.
+
+    /** Inputs are waiting: the next boundary applies them. Any thread. */
+    public void inputsArrived() {
+        lock.lock();
+        try {
+            inputsPending = true;
+            inputsWhileStopped |= clock.isStopped();
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Model tasks run so far (observers not counted): the place in the task sequence. */
+    public long modelTasksRun() {
+        return modelTasksRun;
+    }
+
+    /**
+     * Crosses a pending boundary and runs the next task, if one may run now, on the calling thread.
+     * Tests drive the scheduler with it.
      *
      * @return whether a task ran
      */
     public boolean runNext() {
-        Entry e;
-        synchronized (this) {
-            if (executing) {
-                return false;
-            }
-            e = takeDue();
-            if (e == null) {
-                return false;
-            }
-            executing = true;
+        if (!tryAcquire()) {
+            return false;
         }
-        execute(e);
-        return true;
-    }
-
-    /** Runs a taken task; afterwards another thread may take the next one. */
-    private void execute(Entry e) {
         try {
-            e.task.run(e.runTime);
+            Step s;
+            do {
+                s = step();
+            } while (s == Step.BOUNDARY);
+            return s == Step.TASK;
         } finally {
-            synchronized (this) {
-                executing = false;
-                notifyAll();
-            }
+            releaseRight();
         }
     }
 
-    /**
-     * Runs the tasks that may run now on the calling thread, one after the other, until none may
-     * (the clock stopped, nothing due) or another thread is running one; returns how many ran. Tests
-     * drive the scheduler with it; so does the thread that restarts the clock (a client's reader, on
-     * the acknowledgement of the newest event): the next task then runs without first waking the
-     * dispatch loop, which saves one thread hand-off per interlocked exchange. Tasks still run one at
-     * a time, in queue order.
-     */
+    /** Runs tasks on the calling thread until none may run now; returns how many ran. */
     public int runUntilIdle() {
         int n = 0;
         while (runNext()) {
@@ -173,98 +326,263 @@ public final class Scheduler {
     }
 
     /**
-     * The head task if it may run now (removed from the queue), else null. Holds the monitor. A timed
-     * task runs at its own time (the clock jumps there in lockstep; a paced clock has just reached it);
-     * an immediate task runs at the current time. A task queued in the past (a negative timeout) runs
-     * at once, stamped with its own time, and does not pull the clock back.
+     * Runs what may run now on the calling thread for at most {@code budgetNanos}, if no other thread
+     * is running tasks; then lets go, waking the dispatch loop if work remains. A transport thread calls
+     * this after releasing the interlock or delivering inputs.
      */
-    private Entry takeDue() {
-        if (stopped || !clock.isRunning() || queue.isEmpty()) {
-            return null;
+    public void pump(long budgetNanos) {
+        if (!tryAcquire()) {
+            return;
         }
-        Entry head = queue.first();
-        double now = clock.update(horizon());
-        if (!head.immediate && head.time > now) {
-            if (!clock.isLockstep()) {
-                return null;
+        long deadline = System.nanoTime() + budgetNanos;
+        try {
+            while (step() != Step.NONE && System.nanoTime() - deadline < 0) {
+                continue;
             }
-            clock.setSimTime(head.time);
-            now = head.time;
+        } finally {
+            releaseRight();
         }
-        queue.pollFirst();
-        queued.remove(head.task);
-        head.runTime = head.immediate ? now : head.time;
-        return head;
     }
 
     /**
-     * The dispatch loop: waits while the clock is stopped or nothing is due, sleeping in wall time
-     * until the next task is due on a paced clock, and runs tasks in order. Returns after
-     * {@link #shutdown()}.
+     * The dispatch loop: whenever no other thread runs tasks and there is work, takes the right to run
+     * them and runs until none may run; sleeps until the next task is due on a paced clock. Returns
+     * after {@link #shutdown()}.
      */
     public void runLoop() {
         try {
-            while (true) {
-                Entry e = awaitNext();
-                if (e == null) {
-                    return;
+            while (awaitRight()) {
+                try {
+                    while (step() != Step.NONE) {
+                        continue;
+                    }
+                } finally {
+                    releaseRight();
                 }
-                execute(e);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
     }
 
-    private synchronized Entry awaitNext() throws InterruptedException {
-        while (!stopped) {
-            Entry e = executing ? null : takeDue();
-            if (e != null) {
-                executing = true;
-                return e;
+    private boolean awaitRight() throws InterruptedException {
+        lock.lock();
+        try {
+            while (!shutDown) {
+                if (executor == null && hasWork()) {
+                    executor = Thread.currentThread();
+                    return true;
+                }
+                workAvailable.awaitNanos(executor == null ? waitNanos() : IDLE_RECHECK_NANOS);
             }
-            wait(executing ? IDLE_RECHECK_MILLIS : waitMillis());
+            return false;
+        } finally {
+            lock.unlock();
         }
-        return null;
     }
 
-    /** How long to wait before looking again: until the head is due on a running paced clock. */
-    private long waitMillis() {
-        if (!clock.isRunning() || queue.isEmpty() || clock.isLockstep()) {
-            return IDLE_RECHECK_MILLIS;
+    /** Makes {@link #runLoop()} return and every other way of running refuse. */
+    public void shutdown() {
+        lock.lock();
+        try {
+            shutDown = true;
+            workAvailable.signalAll();
+        } finally {
+            lock.unlock();
         }
-        Entry head = queue.first();
-        return Math.max(1L, Math.min(IDLE_RECHECK_MILLIS, clock.millisUntil(head.time)));
     }
 
-    /** Makes {@link #runLoop()} return and {@link #runNext()} refuse to run anything. */
-    public synchronized void shutdown() {
-        stopped = true;
-        notifyAll();
+    public boolean isShutDown() {
+        lock.lock();
+        try {
+            return shutDown;
+        } finally {
+            lock.unlock();
+        }
     }
 
-    /** A queued task: immediate ones first, then by time, higher priority first, insertion order. */
-    private static final class Entry implements Comparable<Entry> {
+    private boolean tryAcquire() {
+        lock.lock();
+        try {
+            if (executor != null || shutDown) {
+                return false;
+            }
+            executor = Thread.currentThread();
+            return true;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private void releaseRight() {
+        lock.lock();
+        try {
+            executor = null;
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Wakes the dispatch loop if nobody is running tasks and something may run. Holds the lock. */
+    private void signalIfIdle() {
+        if (executor == null && !shutDown) {
+            workAvailable.signalAll();
+        }
+    }
+
+    /** One boundary crossing or one task, by the holder of the right to run. */
+    private Step step() {
+        Entry e;
+        double boundaryTime;
+        lock.lock();
+        try {
+            if (shutDown || clock.isStopped()) {
+                return Step.NONE;
+            }
+            if (inputsPending && boundary != null) {
+                inputsPending = false;
+                boundaryTime = inputsWhileStopped ? clock.getSimTime() : clock.update(horizon());
+                inputsWhileStopped = false;
+                e = null;
+            } else {
+                e = clock.isBegun() ? takeDue() : null;
+                if (e == null) {
+                    return Step.NONE;
+                }
+                boundaryTime = 0.0;
+            }
+        } finally {
+            lock.unlock();
+        }
+        if (e == null) {
+            boundary.cross(boundaryTime);
+            return Step.BOUNDARY;
+        }
+        try {
+            e.task.run(e.runTime);
+        } catch (RuntimeException ex) {
+            failureHandler.accept(ex);
+        }
+        if (e.model) {
+            modelTasksRun++;
+        }
+        return Step.TASK;
+    }
+
+    /** Whether the holder of the right could do something now. Holds the lock. */
+    private boolean hasWork() {
+        if (shutDown || clock.isStopped()) {
+            return false;
+        }
+        if (inputsPending && boundary != null) {
+            return true;
+        }
+        if (!clock.isBegun()) {
+            return false;
+        }
+        if (peekImmediate() != null) {
+            return true;
+        }
+        Entry head = peekTimed();
+        return head != null && (head.time <= clock.update(head.time) || (clock.isLockstep() && !clock.isHeld()));
+    }
+
+    /**
+     * The head task if it may run now (removed from the queue), else null. Holds the lock. A timed
+     * task runs at its own time (the clock jumps there in lockstep; a paced clock has just reached
+     * it); an immediate task at the time it was stamped with. A task queued in the past (a negative
+     * timeout) runs at once, stamped with its own time, and does not pull the clock back.
+     */
+    private Entry takeDue() {
+        Entry head = peekImmediate();
+        if (head != null) {
+            immediate.pollFirst();
+            return taken(head);
+        }
+        head = peekTimed();
+        if (head == null) {
+            return null;
+        }
+        double now = clock.update(head.time);
+        if (head.time > now) {
+            if (!clock.isLockstep() || clock.isHeld()) {
+                return null;
+            }
+            clock.setSimTime(head.time);
+        }
+        timed.poll();
+        return taken(head);
+    }
+
+    private Entry taken(Entry e) {
+        e.queued = false;
+        size--;
+        return e;
+    }
+
+    /** How long the dispatch loop sleeps: until the head is due on a running paced clock. */
+    private long waitNanos() {
+        if (!clock.canRun() || clock.isLockstep() || clock.isHeld()) {
+            return IDLE_RECHECK_NANOS;
+        }
+        Entry head = peekTimed();
+        if (head == null) {
+            return IDLE_RECHECK_NANOS;
+        }
+        return Math.max(1L, Math.min(IDLE_RECHECK_NANOS, clock.nanosUntil(head.time)));
+    }
+
+    /** A queued task and its handle: immediate ones first, then by time, higher priority first, order queued. */
+    private final class Entry implements Comparable<Entry>, TaskHandle {
         final boolean immediate;
         final double time;
         final int priority;
         final long sequence;
+        final boolean model;
         final Task task;
         double runTime;
+        boolean queued = true;
+        boolean cancelled;
 
-        Entry(boolean immediate, double time, int priority, long sequence, Task task) {
+        Entry(boolean immediate, double time, int priority, long sequence, boolean model, Task task) {
             this.immediate = immediate;
             this.time = time;
             this.priority = priority;
             this.sequence = sequence;
+            this.model = model;
             this.task = task;
+            this.runTime = time;
+        }
+
+        @Override
+        public boolean cancel() {
+            lock.lock();
+            try {
+                if (!queued) {
+                    return false;
+                }
+                queued = false;
+                cancelled = true;
+                size--;
+                return true;
+            } finally {
+                lock.unlock();
+            }
+        }
+
+        @Override
+        public boolean isScheduled() {
+            lock.lock();
+            try {
+                return queued;
+            } finally {
+                lock.unlock();
+            }
         }
 
         @Override
         public int compareTo(Entry o) {
-            if (immediate != o.immediate) {
-                return immediate ? -1 : 1;
-            }
             int c = Double.compare(time, o.time);
             if (c != 0) {
                 return c;

@@ -1,19 +1,33 @@
 package rp1.simulator.scheduler;
 
 /**
- * The simulation clock (behavior.md section 4.2). Paced: while running, simulation time follows wall
- * time multiplied by the speed, {@code E = s0 + (wall - w0) * speed}, and the scheduler lets it advance
- * only up to the next task. Lockstep ({@link #lockstep()}, the {@code simulationSpeed=max} setting):
- * the wall clock is never read and time jumps from task to task as fast as they can be run.
+ * The simulation clock (docs/behavior.md section 4.2). Two kinds:
+ * <ul>
+ * <li>Paced: simulation time follows absolute deadlines, {@code speed} simulated seconds per wall second
+ * since the clock began. A task is never run before its deadline; when the simulation falls behind (a
+ * late wake-up, a client slow to acknowledge an event) the tasks that have fallen due run back to back
+ * until it has caught up, so lateness is made up instead of accumulating. The catching up is bounded:
+ * the clock is never more than {@link #MAX_LAG_SECONDS} of wall time behind, so a long pause (a
+ * debugger, a client that thinks for a minute) is not followed by a burst of that length.</li>
+ * <li>Lockstep ({@link #lockstep()}, {@code simulationSpeed=max}): the wall clock is never read; time
+ * jumps to each task as it runs.</li>
+ * </ul>
  *
- * <p>"Stopped" means frozen: the interlock stops the clock while a client handles an event, and no
- * task runs until it is started again. Not thread-safe on its own: the {@link Scheduler} guards it.
+ * <p>Three ways to hold time back: before {@link #begin()} nothing runs; while {@link #stop() stopped}
+ * (the interlock waits for a client) nothing runs and time is frozen; while {@link #hold() held}
+ * (waiting for clients to place their robots) time cannot advance, but work due at the current time
+ * still runs. Not thread-safe on its own: the {@link Scheduler} guards it.
  */
 public final class SimClock {
+    /** How far, in wall seconds, a paced clock may fall behind its deadlines before it gives up catching up. */
+    public static final double MAX_LAG_SECONDS = 1.0;
+
     private final TimeSource wall;
     private final double speed;
     private final boolean lockstep;
-    private boolean running;
+    private boolean begun;
+    private boolean stopped;
+    private boolean held;
     private double simTime;
     private long wallAnchor;
     private double simAnchor;
@@ -50,36 +64,77 @@ public final class SimClock {
         return speed;
     }
 
-    public boolean isRunning() {
-        return running;
+    /** Whether tasks may run: the clock has begun and the interlock does not hold it. */
+    boolean canRun() {
+        return begun && !stopped;
     }
 
-    /** Starts (or restarts) the clock at the current simulation time. */
-    void start() {
-        if (!running) {
-            if (!lockstep) {
-                wallAnchor = wall.nanoTime();
-                simAnchor = simTime;
-            }
-            running = true;
+    boolean isBegun() {
+        return begun;
+    }
+
+    boolean isStopped() {
+        return stopped;
+    }
+
+    boolean isHeld() {
+        return held;
+    }
+
+    /** Begins the run: deadlines count from now. Does nothing if it has begun. */
+    void begin() {
+        if (!begun) {
+            begun = true;
+            anchor();
         }
     }
 
-    /** Freezes the clock after bringing it up to date (limited by {@code horizon}). */
+    private void anchor() {
+        if (!lockstep) {
+            wallAnchor = wall.nanoTime();
+            simAnchor = simTime;
+        }
+    }
+
+    /** Freezes time after bringing it up to date (limited by {@code horizon}); no task runs until {@link #resume()}. */
     void stop(double horizon) {
-        if (running) {
+        if (!stopped) {
             update(horizon);
-            running = false;
+            stopped = true;
+        }
+    }
+
+    /** Ends a {@link #stop(double)}; the deadlines are not moved, so time lost while stopped is caught up. */
+    void resume() {
+        stopped = false;
+    }
+
+    /** Time may not advance until {@link #release()}; work due now still runs. */
+    void hold() {
+        held = true;
+    }
+
+    /** Ends a {@link #hold()}: time runs on from here, deadlines counting from now. */
+    void release() {
+        if (held) {
+            held = false;
+            anchor();
         }
     }
 
     /**
-     * Advances simulation time to what the wall clock says, but never past {@code horizon} (the time
-     * of the first queued timed task); returns the updated time. Lockstep and stopped clocks do not move.
+     * Advances simulation time to what the deadlines say, but never past {@code horizon} (the time of
+     * the first queued timed task); returns the updated time. Lockstep, stopped, held and not yet begun
+     * clocks do not move.
      */
     double update(double horizon) {
-        if (running && !lockstep) {
+        if (!lockstep && begun && !stopped && !held) {
             double estimate = estimate();
+            double maxLag = MAX_LAG_SECONDS * speed;
+            if (estimate - simTime > maxLag) {
+                simAnchor -= estimate - simTime - maxLag;
+                estimate = simTime + maxLag;
+            }
             if (estimate > simTime) {
                 simTime = Math.min(estimate, horizon);
             }
@@ -87,8 +142,8 @@ public final class SimClock {
         return simTime;
     }
 
-    /** What the wall clock says simulation time is now (paced clocks only). */
-    double estimate() {
+    /** What the deadlines say simulation time is now (paced clocks only). */
+    private double estimate() {
         return simAnchor + (wall.nanoTime() - wallAnchor) * 1.0e-9 * speed;
     }
 
@@ -97,13 +152,13 @@ public final class SimClock {
         return simTime;
     }
 
-    /** Sets the time the task about to run is stamped with. */
+    /** Sets the time the task about to run is stamped with (lockstep). */
     void setSimTime(double t) {
         simTime = t;
     }
 
-    /** Wall milliseconds until the estimate reaches {@code target} (paced clocks only). */
-    long millisUntil(double target) {
-        return Math.round((target - estimate()) / speed * 1000.0);
+    /** Wall nanoseconds until the deadline of simulation time {@code target} (paced clocks only). */
+    long nanosUntil(double target) {
+        return (long) Math.ceil((target - estimate()) / speed * 1.0e9);
     }
 }

@@ -1,22 +1,16 @@
 package rp1.simulator.session;
 
-import java.util.Collections;
 import java.util.HashSet;
 import java.util.Set;
 
 import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyPart;
-import rp1.rossum.RsBodySensor;
 import rp1.rossum.RsConnection;
 import rp1.rossum.RsConnectionBodyHandler;
 import rp1.rossum.RsLogInterface;
-import rp1.rossum.RsWheel;
 import rp1.rossum.RsWheelSystem;
 import rp1.rossum.event.RsEvent;
 import rp1.rossum.event.RsHeartbeatEvent;
 import rp1.rossum.event.RsPlanEvent;
-import rp1.rossum.event.RsSensorEvent;
-import rp1.rossum.event.RsTargetSelectionEvent;
 import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.request.RsActuatorControlRequest;
 import rp1.rossum.request.RsActuatorControlRequestHandler;
@@ -38,58 +32,87 @@ import rp1.rossum.request.RsPositionRequestHandler;
 import rp1.rossum.request.RsRequest;
 import rp1.rossum.request.RsSensorRequest;
 import rp1.rossum.request.RsSensorRequestHandler;
+import rp1.rossum.request.RsSubscriptionRequest;
+import rp1.rossum.request.RsSubscriptionRequestHandler;
 import rp1.rossum.request.RsTargetSelectionRequest;
 import rp1.rossum.request.RsTargetSelectionRequestHandler;
 import rp1.rossum.request.RsTimeoutRequestHandler;
-import rp1.simulator.scheduler.Interlock;
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
+import rp1.simulator.scheduler.TaskHandle;
 import rp1.simulator.world.EventSink;
 import rp1.simulator.world.Robot;
 import rp1.simulator.world.World;
 
 /**
- * One client's session with the simulation: turns the requests its connection reads into scheduler
- * tasks stamped with the current simulation time (behavior.md section 4.3), and sends the events the
- * world produces for its robot. Requests that concern the robot are ignored until the client has
- * sent a body; requests for a robot that is not on the floor are ignored as RP1 0.60 ignores them;
- * requests naming parts the body does not have are ignored (RP1 0.60 crashed a thread on them).
+ * One client's session with the simulation: it translates the client's requests into scheduler tasks
+ * on its robot and the world (docs/behavior.md section 4.3) and sends the client the events the world
+ * produces for it.
+ *
+ * <p>Two halves, on two kinds of thread. The request handlers its connection calls (on a transport
+ * thread, or on whatever thread an in-process client sends from) only wrap each request and queue it
+ * as an input of the simulation. At the next boundary between tasks, the thread running tasks applies
+ * it ({@link Request#applyTo}), stamped with the current time: only then does anything change, so all
+ * session and model state is touched by that thread alone.
+ *
+ * <p>Requests that concern the robot are ignored until the client has sent a body; requests for a
+ * robot that is not on the floor are ignored as RP1 0.60 ignores them; requests naming parts the body
+ * does not have are ignored with a verbose log line (RP1 0.60 crashed a thread on them). After the
+ * client has left, nothing it sent is applied.
  */
-public final class ClientSession implements EventSink, RsTimeoutRequestHandler, RsMotionRequestHandler,
-        RsPositionRequestHandler, RsPlacementRequestHandler, RsHaltRequestHandler, RsSensorRequestHandler,
-        RsTargetSelectionRequestHandler, RsPainterChangeRequestHandler, RsActuatorControlRequestHandler,
-        RsEncoderStatusRequestHandler, RsPlanRequestHandler, RsHeartbeatRequestHandler {
-    private final World world;
-    private final Scheduler scheduler;
-    private final Interlock interlock;
-    private final RsConnection connection;
-    private final RsLogInterface log;
-    private final String description;
-    private final Set<Task> timeouts = Collections.synchronizedSet(new HashSet<>());
-    private volatile Robot robot;
-    private volatile boolean closed;
-    private Task startMotion;
-    private Heartbeat heartbeat;
-    private Runnable onClose;
+public final class ClientSession implements EventSink, RsTimeoutRequestHandler, RsSubscriptionRequestHandler,
+        RsMotionRequestHandler, RsPositionRequestHandler, RsPlacementRequestHandler, RsHaltRequestHandler,
+        RsSensorRequestHandler, RsTargetSelectionRequestHandler, RsPainterChangeRequestHandler,
+        RsActuatorControlRequestHandler, RsEncoderStatusRequestHandler, RsPlanRequestHandler,
+        RsHeartbeatRequestHandler {
 
-    /**
-     * Attaches to {@code connection}: registers every request handler, the body handler, the
-     * interlock (if enabled) and the shutdown handler. Start the connection's reader afterwards.
-     */
-    public ClientSession(World world, Scheduler scheduler, Interlock interlock, RsConnection connection,
-                         RsLogInterface log, String description) {
-        this.world = world;
-        this.scheduler = scheduler;
-        this.interlock = interlock;
-        this.connection = connection;
-        this.log = log;
-        this.description = description;
-        register();
+    /** What a session works with: the simulation's parts, handed over by the simulation. */
+    public interface Host {
+        World world();
+
+        Scheduler scheduler();
+
+        Heartbeats heartbeats();
+
+        RsLogInterface log();
+
+        /** Queues a request of {@code session} for the next boundary. */
+        void submit(ClientSession session, Request request);
     }
 
-    private void register() {
-        RsConnection c = connection;
+    private final int number;
+    private final String description;
+    private final Host host;
+    private final World world;
+    private final Scheduler scheduler;
+    private final RsLogInterface log;
+    private final RsConnection connection;
+    private final Subscriptions subscriptions = new Subscriptions();
+    private final Set<TimeoutTask> timeouts = new HashSet<>();
+    private Robot robot;
+    private boolean departed;
+    private TaskHandle startMotion = TaskHandle.NONE;
+    private Heartbeats.Beat heartbeat;
+    private Runnable onDeparture = () -> { };
+
+    /**
+     * A session for the client numbered {@code number} (1, 2, ... in the order clients joined) on
+     * {@code connection}: registers itself for every request the connection reads and for its body.
+     */
+    public ClientSession(int number, String description, RsConnection connection, Host host) {
+        this.number = number;
+        this.description = description;
+        this.host = host;
+        this.world = host.world();
+        this.scheduler = host.scheduler();
+        this.log = host.log();
+        this.connection = connection;
+        register(connection);
+    }
+
+    private void register(RsConnection c) {
         c.setTimeoutRequestHandler(this);
+        c.setSubscriptionRequestHandler(this);
         c.setMotionRequestHandler(this);
         c.setPositionRequestHandler(this);
         c.setPlacementRequestHandler(this);
@@ -104,13 +127,14 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         c.setBodyHandler(new RsConnectionBodyHandler() {
             @Override
             public void process(RsBody body) {
-                bodyReceived(body);
+                submit(new Request.Body(body));
             }
         });
-        if (interlock != null) {
-            c.addInterlock(interlock.forClient(this));
-        }
-        c.setProtocolShutdownHandler(this::connectionClosed);
+    }
+
+    /** The client's number: 1, 2, ... in the order the clients joined. */
+    public int getNumber() {
+        return number;
     }
 
     /** Who this client is, for log lines (e.g. "client 3 (/127.0.0.1:40312)"). */
@@ -118,60 +142,100 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         return description;
     }
 
-    /** The client's robot, or null before it sent a body. */
-    public Robot getRobot() {
-        return robot;
-    }
-
     public RsConnection getConnection() {
         return connection;
     }
 
-    /** Whether the connection has ended. */
-    public boolean isClosed() {
-        return closed;
+    /** The client's robot, or null before it sent a body. Read it on the thread running tasks. */
+    public Robot getRobot() {
+        return robot;
     }
 
-    /** Called once, after the session ended and its robot left the world. */
-    public void setCloseListener(Runnable listener) {
-        onClose = listener;
+    /** Whether the client has left (applied at a boundary). */
+    public boolean hasDeparted() {
+        return departed;
+    }
+
+    /** Run once, on the thread running tasks, when the client's departure has been applied. */
+    public void setDepartureListener(Runnable listener) {
+        onDeparture = listener;
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Transport side: wrap and queue.
+
+    private void submit(Request r) {
+        host.submit(this, r);
+    }
+
+    /** The connection ended: the client's departure is queued like its requests. Any thread. */
+    public void connectionClosed() {
+        submit(new Request.Departure());
     }
 
     @Override
-    public void send(RsEvent event) {
-        connection.sendEvent(event);
+    public void process(double duration, int timeoutIndex) {
+        submit(new Request.Timeout(duration, timeoutIndex));
     }
 
     @Override
-    public boolean isSubscribed(int eventCode, int index) {
-        return connection.isClientSubscribedToEvent(eventCode, index);
+    public void process(RsSubscriptionRequest r) {
+        submit(new Request.Subscription(r.eventCode, r.eventIndex, r.eventEnable));
     }
 
-    private double now() {
-        return scheduler.now();
+    @Override
+    public void process(RsHeartbeatRequest r) {
+        submit(new Request.Heartbeat(r.interval));
     }
 
-    private void at(double time, Task task) {
-        scheduler.schedule(time, Scheduler.NORMAL, task);
+    @Override
+    public void process(RsMotionRequest r) {
+        submit(new Request.Motion(r));
     }
 
-    private void bodyReceived(RsBody body) {
-        Robot previous = robot;
-        if (previous != null) {
-            log.log(description + " sent a second body; it replaces the first (the robot must be placed again)");
-            scheduler.scheduleImmediate(t -> world.removeRobot(previous));
-        }
-        robot = world.addRobot(body, this);
-        log.verbose(description + ": body \"" + body.getName() + "\" with " + body.getBodyPartArray().length + " parts");
+    @Override
+    public void process(RsHaltRequest r) {
+        submit(new Request.Halt());
     }
 
-    /** The robot, or null (with a verbose log line) if the client has not sent a body yet. */
-    private Robot robotFor(String request) {
-        Robot r = robot;
-        if (r == null) {
-            log.verbose(description + ": " + request + " request before a body was sent; ignored");
-        }
-        return r;
+    @Override
+    public void process() {
+        submit(new Request.Position());
+    }
+
+    @Override
+    public void process(RsPlacementRequest r) {
+        submit(new Request.Placement(r.name));
+    }
+
+    @Override
+    public void process(RsSensorRequest r) {
+        submit(new Request.SensorStatus(r.sensorID));
+    }
+
+    @Override
+    public void process(RsTargetSelectionRequest r) {
+        submit(new Request.TargetSelection(r.random, r.name, r.status, r.exclusive));
+    }
+
+    @Override
+    public void process(RsPlanRequest r) {
+        submit(new Request.Plan());
+    }
+
+    @Override
+    public void process(RsPainterChangeRequest r) {
+        submit(Request.PainterChange.of(r));
+    }
+
+    @Override
+    public void process(RsActuatorControlRequest r) {
+        submit(new Request.ActuatorControl(r.actuatorID, r.commandID, r.getParameterNames(), r.getParameterValues()));
+    }
+
+    @Override
+    public void process(RsEncoderStatusRequest r) {
+        submit(new Request.EncoderStatus(r.requestIndex, r.encoderID, r.clearOnReport));
     }
 
     @Override
@@ -179,150 +243,97 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         log.verbose(description + ": unexpected untyped request " + r);
     }
 
-    @Override
-    public void process(double duration, int timeoutIndex) {
-        double due = now() + duration;
-        Task[] self = new Task[1];
-        self[0] = t -> {
-            timeouts.remove(self[0]);
-            send(new RsTimeoutEvent(t, timeoutIndex));
-        };
-        timeouts.add(self[0]);
-        at(due, self[0]);
-    }
+    // ---------------------------------------------------------------------------------------------
+    // Simulation side: applied at a boundary, on the thread running tasks.
 
-    @Override
-    public void process(RsHeartbeatRequest r) {
-        double start = now();
-        synchronized (this) {
-            if (heartbeat != null) {
-                heartbeat.cancel();
-                heartbeat = null;
-            }
-            if (r.interval > 0.0 && !closed) {
-                heartbeat = new Heartbeat(this, scheduler, start, r.interval);
-                heartbeat.begin();
-            }
+    /** Applies {@code request} at {@code now}; nothing once the client has left. */
+    void apply(Request request, double now) {
+        if (!departed) {
+            request.applyTo(this, now);
         }
     }
 
-    void heartbeat(double time, int sequence) {
-        send(new RsHeartbeatEvent(time, sequence));
+    @Override
+    public void send(RsEvent event) {
+        if (!departed) {
+            connection.sendEvent(event);
+        }
     }
 
     @Override
-    public void process(RsMotionRequest r) {
+    public boolean isSubscribed(int eventCode, int index) {
+        return subscriptions.isSubscribed(eventCode, index);
+    }
+
+    private TaskHandle at(double time, Task task) {
+        return scheduler.schedule(time, Scheduler.NORMAL, task);
+    }
+
+    /** The robot, or null (with a verbose log line) if the client has not sent a body yet. */
+    private Robot robotFor(String request) {
+        if (robot == null) {
+            log.verbose(description + ": " + request + " request before a body was sent; ignored");
+        }
+        return robot;
+    }
+
+    void body(RsBody body, double now) {
+        Robot previous = robot;
+        if (previous != null) {
+            log.log(description + " sent a second body; it replaces the first (the robot must be placed again)");
+            world.removeRobot(previous);
+        }
+        robot = world.addRobot(body, this);
+        log.verbose(description + ": body \"" + body.getName() + "\" with " + body.getBodyPartArray().length + " parts");
+    }
+
+    void subscription(Request.Subscription r) {
+        subscriptions.set(r.code(), r.index(), r.enable());
+    }
+
+    void timeout(Request.Timeout r, double now) {
+        TimeoutTask t = new TimeoutTask(r.index());
+        timeouts.add(t);
+        t.handle = at(now + r.duration(), t);
+    }
+
+    /** A timeout falling due; cancelled if the client leaves first. */
+    private final class TimeoutTask implements Task {
+        private final int index;
+        TaskHandle handle = TaskHandle.NONE;
+
+        TimeoutTask(int index) {
+            this.index = index;
+        }
+
+        @Override
+        public void run(double time) {
+            timeouts.remove(this);
+            send(new RsTimeoutEvent(time, index));
+        }
+    }
+
+    void heartbeat(double interval, double now) {
+        if (heartbeat != null) {
+            heartbeat.stop();
+            heartbeat = null;
+        }
+        if (interval > 0.0) {
+            heartbeat = host.heartbeats().start((t, sequence) -> send(new RsHeartbeatEvent(t, sequence)), now, interval);
+        }
+    }
+
+    void motion(RsMotionRequest request, double now) {
         Robot bot = robotFor("motion");
         if (bot != null && bot.isPlaced()) {
-            startMotion(bot, r);
+            startMotion(bot, request, now);
         }
     }
 
     /** Replaces any waiting start-motion task by one for {@code request}, due now. */
-    private synchronized void startMotion(Robot bot, RsMotionRequest request) {
-        if (startMotion != null) {
-            scheduler.cancel(startMotion);
-        }
-        Task task = new Task() {
-            @Override
-            public void run(double t) {
-                clearStartMotion(this);
-                world.requestMotion(bot, request, t);
-            }
-        };
-        startMotion = task;
-        at(now(), task);
-    }
-
-    private synchronized void clearStartMotion(Task task) {
-        if (startMotion == task) {
-            startMotion = null;
-        }
-    }
-
-    private synchronized void cancelStartMotion() {
-        if (startMotion != null) {
-            scheduler.cancel(startMotion);
-            startMotion = null;
-        }
-    }
-
-    @Override
-    public void process(RsHaltRequest r) {
-        Robot bot = robotFor("halt");
-        if (bot != null) {
-            scheduler.scheduleImmediate(t -> stop(bot, t));
-        }
-    }
-
-    /** The stop-motion task: drops any waiting request and halts a motion under way. */
-    private void stop(Robot bot, double time) {
-        cancelStartMotion();
-        world.halt(bot, time);
-    }
-
-    @Override
-    public void process() {
-        Robot bot = robotFor("position");
-        if (bot != null) {
-            at(now(), t -> send(bot.getBody().getPositionEvent(t)));
-        }
-    }
-
-    @Override
-    public void process(RsPlacementRequest r) {
-        Robot bot = robotFor("placement");
-        if (bot == null) {
-            return;
-        }
-        scheduler.scheduleImmediate(t -> stop(bot, t));
-        bot.markUnplaced();
-        at(now(), t -> world.place(bot, r.name, t));
-    }
-
-    @Override
-    public void process(RsSensorRequest r) {
-        Robot bot = robotFor("sensor status");
-        if (bot == null) {
-            return;
-        }
-        at(now(), t -> {
-            RsBodyPart part = bot.getBody().getPartByID(r.sensorID);
-            if (!(part instanceof RsBodySensor)) {
-                log.verbose(description + ": no sensor with id " + r.sensorID + "; status request ignored");
-            } else if (bot.isPlaced()) {
-                RsSensorEvent e = ((RsBodySensor) part).getSensorEvent(t);
-                if (e != null) {
-                    send(e);
-                }
-            }
-        });
-    }
-
-    /** Answered at once from the reader, as RP1 0.60 does; selection is shared by all robots. */
-    @Override
-    public void process(RsTargetSelectionRequest r) {
-        RsTargetSelectionEvent[] events;
-        synchronized (world.getPlan()) {
-            events = world.getPlan().processTargetSelectionRequest(now(), r);
-        }
-        for (RsTargetSelectionEvent e : events) {
-            send(e);
-        }
-        world.changed(Double.NaN);
-    }
-
-    @Override
-    public void process(RsPlanRequest r) {
-        scheduler.scheduleImmediate(t -> send(new RsPlanEvent(0.0, world.getPlan())));
-    }
-
-    @Override
-    public void process(RsPainterChangeRequest r) {
-        Robot bot = robotFor("painter change");
-        if (bot != null) {
-            at(now(), t -> world.painterChange(bot, r));
-        }
+    private void startMotion(Robot bot, RsMotionRequest request, double now) {
+        startMotion.cancel();
+        startMotion = at(now, t -> world.requestMotion(bot, request, t));
     }
 
     /**
@@ -330,77 +341,115 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
      * ignored). Commands for other parts, with fewer than two values, or for a robot off the floor
      * are ignored.
      */
-    @Override
-    public void process(RsActuatorControlRequest r) {
+    void actuatorControl(Request.ActuatorControl r, double now) {
         Robot bot = robotFor("actuator control");
         if (bot == null || !bot.isPlaced()) {
             return;
         }
         RsWheelSystem wheels = bot.getBody().wheelSystem;
-        double[] values = r.getParameterValues();
-        if (wheels == null || wheels.getID() != r.actuatorID || values.length < 2) {
-            log.verbose(description + ": actuator command " + r + " not applicable; ignored");
+        double[] values = r.valuesCopy();
+        if (wheels == null || wheels.getID() != r.actuatorId() || values.length < 2) {
+            log.verbose(description + ": actuator command " + r.commandId() + " for part " + r.actuatorId()
+                    + " not applicable; ignored");
             return;
         }
         RsMotionRequest motion = wheels.getMotionRequestForActuatorControl(values);
         if (motion != null) {
-            startMotion(bot, motion);
+            startMotion(bot, motion, now);
         }
     }
 
-    @Override
-    public void process(RsEncoderStatusRequest r) {
+    void halt(double now) {
+        Robot bot = robotFor("halt");
+        if (bot != null) {
+            scheduler.scheduleImmediate(now, t -> stop(bot, t));
+        }
+    }
+
+    /** The stop-motion task: drops any waiting request and halts a motion under way. */
+    private void stop(Robot bot, double time) {
+        startMotion.cancel();
+        world.halt(bot, time);
+    }
+
+    void position(double now) {
+        Robot bot = robotFor("position");
+        if (bot != null) {
+            at(now, bot::reportPosition);
+        }
+    }
+
+    /** Off the floor at once (requests after this one see it unplaced), on it again when the placement task runs. */
+    void placement(String name, double now) {
+        Robot bot = robotFor("placement");
+        if (bot == null) {
+            return;
+        }
+        scheduler.scheduleImmediate(now, t -> stop(bot, t));
+        world.unplace(bot);
+        at(now, t -> world.place(bot, name, t));
+    }
+
+    void sensorStatus(Request.SensorStatus r, double now) {
+        Robot bot = robotFor("sensor status");
+        if (bot == null) {
+            return;
+        }
+        if (!bot.hasSensor(r.sensorId())) {
+            log.verbose(description + ": no sensor with id " + r.sensorId() + "; status request ignored");
+            return;
+        }
+        at(now, t -> bot.reportSensor(r.sensorId(), t));
+    }
+
+    /** Applied at once, as RP1 0.60 answers it from the reader; selection is shared by all robots. */
+    void targetSelection(Request.TargetSelection r, double now) {
+        for (RsEvent e : world.selectTargets(r.toRequest(), now)) {
+            send(e);
+        }
+    }
+
+    void plan(double now) {
+        scheduler.scheduleImmediate(now, t -> send(new RsPlanEvent(0.0, world.getPlan())));
+    }
+
+    void painterChange(Request.PainterChange r, double now) {
+        Robot bot = robotFor("painter change");
+        if (bot != null) {
+            at(now, t -> world.painterChange(bot, r.toRequest()));
+        }
+    }
+
+    void encoderStatus(Request.EncoderStatus r, double now) {
         Robot bot = robotFor("encoder status");
         if (bot == null) {
             return;
         }
-        at(now(), t -> {
-            RsWheelSystem wheels = bot.getBody().wheelSystem;
-            for (int id : r.encoderID) {
-                RsWheel wheel = wheels == null ? null : wheels.getWheelForID(id);
-                if (wheel == null) {
-                    log.verbose(description + ": no wheel with id " + id + "; encoder status skipped");
-                } else {
-                    send(wheel.getEncoderStatusEvent(t, r.requestIndex, r.clearOnReport));
-                }
+        at(now, t -> {
+            int missing = bot.reportEncoders(r.requestIndex(), r.idsCopy(), r.clear(), t);
+            if (missing > 0) {
+                log.verbose(description + ": " + missing + " of the encoder ids asked for are not wheels; skipped");
             }
         });
     }
 
     /**
-     * The connection ended: pending work for this client is cancelled, its interlock released, and
-     * its robot leaves the world.
+     * The client left: its waiting work is cancelled and its robot leaves the world now, before any
+     * input that arrived after the departure is applied.
      */
-    private void connectionClosed() {
-        synchronized (this) {
-            if (closed) {
-                return;
-            }
-            closed = true;
-            if (heartbeat != null) {
-                heartbeat.cancel();
-            }
+    void depart() {
+        departed = true;
+        if (heartbeat != null) {
+            heartbeat.stop();
         }
-        cancelStartMotion();
-        Task[] pending;
-        synchronized (timeouts) {
-            pending = timeouts.toArray(new Task[0]);
-            timeouts.clear();
+        startMotion.cancel();
+        for (TimeoutTask t : timeouts) {
+            t.handle.cancel();
         }
-        for (Task t : pending) {
-            scheduler.cancel(t);
+        timeouts.clear();
+        if (robot != null) {
+            world.removeRobot(robot);
         }
-        if (interlock != null) {
-            interlock.release(this);
-        }
-        Robot bot = robot;
-        if (bot != null) {
-            bot.markUnplaced();
-            scheduler.scheduleImmediate(t -> world.removeRobot(bot));
-        }
-        Runnable listener = onClose;
-        if (listener != null) {
-            listener.run();
-        }
+        onDeparture.run();
     }
 }

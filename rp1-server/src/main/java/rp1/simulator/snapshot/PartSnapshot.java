@@ -13,7 +13,7 @@ import rp1.rossum.RsWheel;
  */
 public record PartSnapshot(RsBodyPart part, boolean hot, double steering) {
 
-    /** The part's state now; call on the scheduler thread, which changes it. */
+    /** The part's state now; call on the thread running the simulation's tasks, which changes it. */
     public static PartSnapshot of(RsBodyPart part) {
         double steering = part instanceof RsWheel ? ((RsWheel) part).getSteeringAngle() : 0.0;
         return new PartSnapshot(part, part.getHot(), steering);

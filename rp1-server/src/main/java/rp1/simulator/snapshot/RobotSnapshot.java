@@ -28,7 +28,7 @@ public record RobotSnapshot(int number, String label, boolean placed, double x, 
         parts = List.copyOf(parts);
     }
 
-    /** The robot's state now; call on the scheduler thread, which changes it. */
+    /** The robot's state now; call on the thread running the simulation's tasks, which changes it. */
     public static RobotSnapshot of(Robot robot) {
         List<PartSnapshot> parts = new ArrayList<>();
         for (RsBodyPart p : robot.getBody().getBodyPartArray()) {

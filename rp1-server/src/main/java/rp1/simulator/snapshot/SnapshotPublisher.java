@@ -6,19 +6,21 @@ import java.util.concurrent.atomic.AtomicReference;
 import rp1.simulator.Simulation;
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
+import rp1.simulator.scheduler.TaskHandle;
 import rp1.simulator.world.World;
 import rp1.simulator.world.WorldListener;
 
 /**
  * Keeps the latest snapshot of the world for an observer on another thread (the view's animation
  * timer). The observer {@link #poll() polls} at its own pace; if the world changed since the last
- * snapshot, a poll queues one immediate capture task, which takes the next snapshot on the scheduler
- * thread. So the simulation pays for at most one snapshot per poll, and nothing at all while nobody
- * polls or nothing changes; a slow or frozen observer merely polls less often.
+ * snapshot, a poll queues one capture, an observer task that takes the next snapshot on the thread
+ * running the simulation's tasks. So the simulation pays for at most one snapshot per poll, and
+ * nothing at all while nobody polls or nothing changes; a slow or frozen observer merely polls less
+ * often.
  *
- * <p>The capture task sends nothing and changes nothing, and immediate tasks neither move the clock
- * nor reorder other tasks, so observing never changes what the clients are told. While the clock is
- * stopped (the interlock waits for a client) the capture waits too, like every task.
+ * <p>The capture sends nothing and changes nothing, and observers neither move the clock nor reorder
+ * model tasks, so observing never changes what the clients are told. While the clock is stopped (the
+ * interlock waits for a client) the capture waits too, like every task.
  */
 public final class SnapshotPublisher implements WorldListener, AutoCloseable {
     private final World world;
@@ -26,6 +28,7 @@ public final class SnapshotPublisher implements WorldListener, AutoCloseable {
     private final AtomicBoolean changed = new AtomicBoolean(true);
     private final AtomicReference<WorldSnapshot> latest;
     private final Task capture = this::capture;
+    private TaskHandle queued = TaskHandle.NONE;
     private volatile boolean closed;
 
     /** Starts observing the simulation's world; the first snapshot shows the plan alone. */
@@ -36,7 +39,7 @@ public final class SnapshotPublisher implements WorldListener, AutoCloseable {
         world.addListener(this);
     }
 
-    /** Any thread: the picture is out of date. */
+    /** On the thread running tasks: the picture is out of date. */
     @Override
     public void worldChanged(World w, double simTime) {
         changed.set(true);
@@ -47,8 +50,10 @@ public final class SnapshotPublisher implements WorldListener, AutoCloseable {
      * a later poll returns it. Any thread; never blocks. After {@link #close()}, always the last one.
      */
     public WorldSnapshot poll() {
-        if (!closed && changed.get()) {
-            scheduler.scheduleImmediate(capture);
+        synchronized (this) {
+            if (!closed && changed.get() && !queued.isScheduled()) {
+                queued = scheduler.observeNow(capture);
+            }
         }
         return latest.get();
     }
@@ -61,9 +66,9 @@ public final class SnapshotPublisher implements WorldListener, AutoCloseable {
 
     /** Stops observing; a capture still queued is withdrawn. */
     @Override
-    public void close() {
+    public synchronized void close() {
         closed = true;
         world.removeListener(this);
-        scheduler.cancel(capture);
+        queued.cancel();
     }
 }

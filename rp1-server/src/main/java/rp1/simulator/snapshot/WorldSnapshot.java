@@ -33,7 +33,7 @@ public record WorldSnapshot(RsPlan plan, double simTime, List<Boolean> targetSel
     }
 
     /**
-     * The world now. Call on the scheduler thread (robots move, parts turn hot and trails grow only
+     * The world now. Call on the thread running the simulation's tasks (robots move, parts turn hot and trails grow only
      * there); target selection, which a client's reader thread changes, is read under the plan's lock.
      */
     public static WorldSnapshot of(World world, double simTime) {

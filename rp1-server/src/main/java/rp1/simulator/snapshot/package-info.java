@@ -3,7 +3,7 @@
  * selected, where each robot is, which of its parts are hot and how its wheels are turned, and how
  * far each paint trail has got, at one simulation time.
  *
- * <p>A snapshot is taken on the scheduler thread and costs a few copied numbers per robot: the body
+ * <p>A snapshot is taken on the thread running the simulation's tasks and costs a few copied numbers per robot: the body
  * parts' geometry and colours never change once a body has arrived, so a snapshot refers to the
  * parts themselves and copies only their changing state; paint-trail segments are append-only, so a
  * segment with the point count read at snapshot time is an immutable view of it.

@@ -5,6 +5,7 @@ import java.util.List;
 
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
+import rp1.simulator.scheduler.TaskHandle;
 
 /**
  * The one recycled motion task of the simulation (behavior.md section 4.4). When it runs at time T it
@@ -16,6 +17,7 @@ final class MotionStepper implements Task {
     private final World world;
     private final Scheduler scheduler;
     private final double interval;
+    private TaskHandle queued = TaskHandle.NONE;
 
     MotionStepper(World world, Scheduler scheduler, double interval) {
         this.world = world;
@@ -23,14 +25,19 @@ final class MotionStepper implements Task {
         this.interval = interval;
     }
 
-    /** Queues the task at {@code time} unless it is already queued (then the earlier entry stands). */
+    /**
+     * Queues the task at {@code time} unless it is already queued: then the entry already there stands,
+     * so a request for a moving robot takes effect at its next step (docs/behavior.md section 4.4).
+     */
     void wake(double time) {
-        scheduler.schedule(time, Scheduler.NORMAL, this);
+        if (!queued.isScheduled()) {
+            queued = scheduler.schedule(time, Scheduler.NORMAL, this);
+        }
     }
 
     /** The task is removed when no robot is left. */
     void cancel() {
-        scheduler.cancel(this);
+        queued.cancel();
     }
 
     @Override
@@ -51,7 +58,7 @@ final class MotionStepper implements Task {
             }
         }
         List<Robot> placed = world.getPlacedRobots();
-        if (placed.size() > 1) {
+        if (placed.size() > 1 && world.robotsInteract()) {
             RobotContacts.resolve(placed, time, time + interval + RobotContacts.LOOK_AHEAD);
         }
         double next = Double.POSITIVE_INFINITY;

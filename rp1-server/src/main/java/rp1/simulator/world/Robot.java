@@ -6,6 +6,7 @@ import java.util.List;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsBodyPainter;
+import rp1.rossum.RsBodyPart;
 import rp1.rossum.RsBodyRangeSensor;
 import rp1.rossum.RsBodySensor;
 import rp1.rossum.RsBodyTargetSensor;
@@ -13,10 +14,12 @@ import rp1.rossum.RsMotion;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsTransform;
 import rp1.rossum.RsWall;
+import rp1.rossum.RsWheel;
+import rp1.rossum.RsWheelSystem;
 import rp1.rossum.event.RsContactSensorEvent;
 import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.event.RsMotionStartedEvent;
-import rp1.rossum.event.RsPositionEvent;
+import rp1.rossum.event.RsSensorEvent;
 import rp1.rossum.request.RsMotionRequest;
 import rp1.rossum.request.RsPainterChangeRequest;
 
@@ -25,9 +28,9 @@ import rp1.rossum.request.RsPainterChangeRequest;
  * waiting to start, and its paint trails. The motion lifecycle of behavior.md section 5.4 lives here,
  * split into the phases the {@link MotionStepper} runs for all robots at one time.
  *
- * <p>Everything here runs on the scheduler thread except {@link #isPlaced()} and
- * {@link #markUnplaced()}, which a client's reader thread uses so that requests arriving after a
- * placement request see the robot off the floor at once, as in RP1 0.60.
+ * <p>Everything here runs on the thread running the simulation's tasks (see
+ * {@link rp1.simulator.scheduler.Scheduler}); a placement request marks the robot unplaced when it is
+ * applied, so requests applied after it see the robot off the floor at once, as in RP1 0.60.
  */
 public final class Robot {
     private final int number;
@@ -38,7 +41,7 @@ public final class Robot {
     private final double sensorReach;
     private final String label;
     private final List<PaintTrail> trails;
-    private volatile boolean placed;
+    private boolean placed;
     private RsMotionRequest pending;
     private boolean moving;
     private boolean placementEvaluation;
@@ -107,9 +110,14 @@ public final class Robot {
         return placed;
     }
 
-    /** A placement request arrived: the robot is off the floor until the placement succeeds. */
-    public void markUnplaced() {
+    /** Off the floor (the world keeps count: {@link World#unplace}). */
+    void markUnplaced() {
         placed = false;
+    }
+
+    /** On the floor again (the world keeps count). */
+    void markPlaced() {
+        placed = true;
     }
 
     public boolean isMoving() {
@@ -159,7 +167,6 @@ public final class Robot {
         moving = false;
         pending = null;
         placementEvaluation = true;
-        placed = true;
     }
 
     /** Step 1 of an evaluation: the motion, wheels, encoders and paint trails brought to {@code time}. */
@@ -246,9 +253,48 @@ public final class Robot {
                 at.getTheta(), m.timeTotal));
     }
 
-    /** The position report at {@code time} (the last pose if unplaced; zeros before any placement). */
-    RsPositionEvent positionEvent(double time) {
-        return body.getPositionEvent(time);
+    /** Sends the position report at {@code time} (the last pose if unplaced; zeros before any placement). */
+    public void reportPosition(double time) {
+        events.send(body.getPositionEvent(time));
+    }
+
+    /** Whether the body has a sensor with this part id. */
+    public boolean hasSensor(int id) {
+        return body.getPartByID(id) instanceof RsBodySensor;
+    }
+
+    /**
+     * Sends the sensor's last computed state, stamped {@code time}, whatever the subscriptions; nothing
+     * if the robot is off the floor (docs/behavior.md section 8.6).
+     */
+    public void reportSensor(int id, double time) {
+        RsBodyPart part = body.getPartByID(id);
+        if (placed && part instanceof RsBodySensor) {
+            RsSensorEvent e = ((RsBodySensor) part).getSensorEvent(time);
+            if (e != null) {
+                events.send(e);
+            }
+        }
+    }
+
+    /**
+     * Sends one encoder status event per id that names a wheel of the wheel system, in order; clears
+     * the accumulators after reporting if asked (docs/behavior.md section 5.8).
+     *
+     * @return how many ids named no wheel (skipped)
+     */
+    public int reportEncoders(int requestIndex, int[] ids, boolean clear, double time) {
+        RsWheelSystem wheels = body.wheelSystem;
+        int missing = 0;
+        for (int id : ids) {
+            RsWheel wheel = wheels == null ? null : wheels.getWheelForID(id);
+            if (wheel == null) {
+                missing++;
+            } else {
+                events.send(wheel.getEncoderStatusEvent(time, requestIndex, clear));
+            }
+        }
+        return missing;
     }
 
     /** Applies a painter-change request to the painter with that id, if the body has one. */

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Random;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.IntConsumer;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsPlacement;
@@ -14,8 +15,10 @@ import rp1.rossum.RsRectangle;
 import rp1.rossum.RsTransform;
 import rp1.rossum.RsWall;
 import rp1.rossum.event.RsPlacementEvent;
+import rp1.rossum.event.RsTargetSelectionEvent;
 import rp1.rossum.request.RsMotionRequest;
 import rp1.rossum.request.RsPainterChangeRequest;
+import rp1.rossum.request.RsTargetSelectionRequest;
 import rp1.simulator.scheduler.Scheduler;
 
 /**
@@ -23,8 +26,9 @@ import rp1.simulator.scheduler.Scheduler;
  * body, in that order; every client with a body is a robot here, and robots collide with each other
  * and see each other with their range sensors (RP1 0.60 let them pass through each other unseen).
  *
- * <p>All changes happen on the scheduler thread, through tasks the client sessions queue, except
- * joining (a reader thread may add a robot; the list is safe for that).
+ * <p>All changes happen on the thread running the simulation's tasks: in tasks, or in client
+ * requests applied at the boundaries between tasks (see {@link rp1.simulator.scheduler.Scheduler}).
+ * The robot list may be read from other threads (it is copy-on-write); a view takes snapshots instead.
  */
 public final class World {
     /** Random poses ("$random") are drawn this many times before the placement fails. */
@@ -37,20 +41,64 @@ public final class World {
     private final List<Robot> robots = new CopyOnWriteArrayList<>();
     private final List<WorldListener> listeners = new CopyOnWriteArrayList<>();
     private final List<PaintTrail> departedTrails = new CopyOnWriteArrayList<>();
+    private final boolean robotsInteract;
+    private IntConsumer placementListener = n -> { };
     private int joined;
+    private int placedCount;
 
     /**
-     * @param plan      the floor plan
-     * @param scheduler the simulation's scheduler
-     * @param interval  seconds between motion evaluations (the modelling interval)
-     * @param random    the simulation's one seeded random source
+     * @param plan           the floor plan
+     * @param scheduler      the simulation's scheduler
+     * @param interval       seconds between motion evaluations (the modelling interval)
+     * @param random         the simulation's one seeded random source
+     * @param robotsInteract whether robots collide with, sense and block the placement of one another
      */
-    public World(RsPlan plan, Scheduler scheduler, double interval, Random random) {
+    public World(RsPlan plan, Scheduler scheduler, double interval, Random random, boolean robotsInteract) {
         this.plan = plan;
         this.walls = plan.getWallArray();
         this.random = random;
+        this.robotsInteract = robotsInteract;
         this.stepper = new MotionStepper(this, scheduler, interval);
         plan.setRandom(random);
+    }
+
+    /** A world whose robots meet each other. */
+    public World(RsPlan plan, Scheduler scheduler, double interval, Random random) {
+        this(plan, scheduler, interval, random, true);
+    }
+
+    /** Told the number of robots on the floor whenever it changes. */
+    public void setPlacementListener(IntConsumer listener) {
+        placementListener = listener;
+    }
+
+    /** Whether robots collide with, sense and block the placement of one another. */
+    public boolean robotsInteract() {
+        return robotsInteract;
+    }
+
+    /** The number of robots on the floor. */
+    public int getPlacedCount() {
+        return placedCount;
+    }
+
+    private void setPlaced(Robot r, boolean placed) {
+        if (r.isPlaced() == placed) {
+            return;
+        }
+        if (placed) {
+            r.markPlaced();
+            placedCount++;
+        } else {
+            r.markUnplaced();
+            placedCount--;
+        }
+        placementListener.accept(placedCount);
+    }
+
+    /** A placement request arrived: the robot is off the floor until the placement succeeds. */
+    public void unplace(Robot r) {
+        setPlaced(r, false);
     }
 
     public RsPlan getPlan() {
@@ -79,7 +127,7 @@ public final class World {
     }
 
     /** A client's body joins the world as an unplaced robot. */
-    public synchronized Robot addRobot(RsBody body, EventSink events) {
+    public Robot addRobot(RsBody body, EventSink events) {
         Robot r = new Robot(++joined, body, events);
         robots.add(r);
         return r;
@@ -93,7 +141,7 @@ public final class World {
         if (robots.remove(r)) {
             departedTrails.addAll(r.getTrails());
         }
-        r.markUnplaced();
+        setPlaced(r, false);
         if (robots.isEmpty()) {
             stepper.cancel();
         }
@@ -115,7 +163,7 @@ public final class World {
     }
 
     /**
-     * A placement request (behavior.md section 7): by name, at a random one of the plan's placements
+     * A placement request (docs/behavior.md section 7): by name, at a random one of the plan's placements
      * (null or empty name), or at a random free pose ("$random"). A pose is clear if the robot
      * overlaps no wall and no other robot on the floor. Answers with a placement event. The motion
      * task is queued before the event goes out, so that requests the client sends in answer to it
@@ -126,9 +174,10 @@ public final class World {
         RsPlacementEvent event = findPlacement(r, requested, time);
         if (event.valid) {
             r.place(time, event.x, event.y, event.orientation);
+            setPlaced(r, true);
             stepper.wake(time);
         } else {
-            r.markUnplaced();
+            setPlaced(r, false);
         }
         r.events().send(event);
         changed(time);
@@ -188,9 +237,9 @@ public final class World {
         return !r.getBody().checkForOverlap(obstacles, new RsTransform(theta, x, y));
     }
 
-    /** Walls plus every other robot on the floor. */
+    /** Walls plus every other robot on the floor (if robots interact). */
     private RsWall[] placementObstacles(Robot r) {
-        return withRobots(r, getPlacedRobots());
+        return robotsInteract ? withRobots(r, getPlacedRobots()) : walls;
     }
 
     /**
@@ -198,7 +247,7 @@ public final class World {
      * within the sensors' reach.
      */
     RsWall[] obstaclesFor(Robot r, List<Robot> placed) {
-        if (!r.hasWallSensors() || placed.size() < 2) {
+        if (!robotsInteract || !r.hasWallSensors() || placed.size() < 2) {
             return walls;
         }
         // Only robots within the sensors' reach can change a reading; with many robots, looking at
@@ -221,6 +270,17 @@ public final class World {
             }
         }
         return all.toArray(new RsWall[0]);
+    }
+
+    /**
+     * A target-selection request, applied at once (docs/behavior.md section 8.7): the events for the
+     * targets it changed, stamped {@code time}, in plan order; random picks draw from the world's seeded
+     * source.
+     */
+    public RsTargetSelectionEvent[] selectTargets(RsTargetSelectionRequest request, double time) {
+        RsTargetSelectionEvent[] events = plan.processTargetSelectionRequest(time, request);
+        changed(Double.NaN);
+        return events;
     }
 
     /** A painter-change request for one of the robot's painters. */

@@ -11,7 +11,7 @@ import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsPlan;
-import rp1.simulator.InProcessClient;
+import rp1.simulator.net.InProcessClient;
 import rp1.simulator.Simulation;
 import rp1.simulator.SimulationSettings;
 

@@ -116,6 +116,7 @@ class SessionScenarioTest {
     void mouseClicksReachEverySubscribedClientWithARobot() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.sendPlacementRequest("west"); // at max speed, time passes only while a robot is on the floor
             c.sendTimeoutRequest(1.0);
             c.await(RsTimeoutEvent.class);
             s.simulation().mouseClick(1, 2, 3.5, 1.25);
@@ -153,6 +154,7 @@ class SessionScenarioTest {
     void aClientThatLeavesTakesItsRobotOutOfTheWorld() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient stay = s.connect(new ScenarioClient(Bodies.round("stay")));
+            stay.sendPlacementRequest("west"); // at max speed, time passes only while a robot is on the floor
             ScenarioClient leave = s.connect(new ScenarioClient(Bodies.round("leave")));
             leave.sendPlacementRequest("centre");
             leave.await(RsPlacementEvent.class);

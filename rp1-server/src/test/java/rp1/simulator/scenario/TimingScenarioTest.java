@@ -34,6 +34,7 @@ class TimingScenarioTest {
     void atEqualTimesTimeoutsComeInRequestOrderAndHeartbeatsLast() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.sendPlacementRequest("west"); // at max speed, time passes only while a robot is on the floor
             c.on(RsHeartbeatEvent.class, b -> {
                 if (b.sequence == 3) {
                     c.sendHeartbeatCancellationRequest();
@@ -55,6 +56,7 @@ class TimingScenarioTest {
     void heartbeatsDoNotDriftAndRestartTheirCountOnANewRequest() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.sendPlacementRequest("west"); // at max speed, time passes only while a robot is on the floor
             c.on(RsHeartbeatEvent.class, b -> {
                 if (b.sequence == 30 && b.simTime < 3.1) {
                     c.sendHeartbeatRequest(0.25);
@@ -75,6 +77,7 @@ class TimingScenarioTest {
     void aZeroLengthTimeoutReadsTheClock() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.sendPlacementRequest("west"); // at max speed, time passes only while a robot is on the floor
             c.once(RsTimeoutEvent.class, e -> c.sendTimeoutRequest(0.0));
             c.sendTimeoutRequest(2.5);
             RsTimeoutEvent second = c.await(RsTimeoutEvent.class, e -> e.timeoutIndex == 2);
@@ -86,6 +89,7 @@ class TimingScenarioTest {
     void aNegativeTimeoutFiresAtOnceStampedInThePast() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.sendPlacementRequest("west"); // at max speed, time passes only while a robot is on the floor
             c.once(RsTimeoutEvent.class, e -> c.sendTimeoutRequest(-1.0));
             c.sendTimeoutRequest(2.0);
             RsTimeoutEvent past = c.await(RsTimeoutEvent.class, e -> e.timeoutIndex == 2);
@@ -97,6 +101,7 @@ class TimingScenarioTest {
     void thePlanEventIsStampedZeroAndResetsTheClientsClock() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.sendPlacementRequest("west"); // at max speed, time passes only while a robot is on the floor
             c.once(RsTimeoutEvent.class, e -> c.sendPlanRequest());
             c.sendTimeoutRequest(4.0);
             RsPlanEvent plan = c.await(RsPlanEvent.class);

@@ -12,7 +12,7 @@ class InterlockTest {
     private final Interlock interlock = new Interlock(scheduler);
 
     InterlockTest() {
-        scheduler.startClock();
+        scheduler.begin();
     }
 
     @Test
@@ -51,8 +51,8 @@ class InterlockTest {
 
     @Test
     void theConnectionViewReportsTheCounter() {
-        assertEquals(1, interlock.forClient("x").openInterlock());
-        assertEquals(1, interlock.forClient("y").getMaximumInterlockIndex());
-        assertTrue(interlock.forClient("x").closeInterlock(1));
+        assertEquals(1, interlock.forClient("x", () -> { }).openInterlock());
+        assertEquals(1, interlock.forClient("y", () -> { }).getMaximumInterlockIndex());
+        assertTrue(interlock.forClient("x", () -> { }).closeInterlock(1));
     }
 }

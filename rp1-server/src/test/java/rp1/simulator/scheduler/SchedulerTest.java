@@ -6,13 +6,17 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 
-/** Task order and simulation time, driven step by step without threads. */
+/** Task order, simulation time, boundaries and the right to run tasks, driven step by step. */
 class SchedulerTest {
-    private final List<String> log = new ArrayList<>();
+    private final List<String> log = Collections.synchronizedList(new ArrayList<>());
 
     private Task record(String name) {
         return t -> log.add(name + "@" + t);
@@ -20,7 +24,7 @@ class SchedulerTest {
 
     private static Scheduler lockstep() {
         Scheduler s = new Scheduler(SimClock.lockstep());
-        s.startClock();
+        s.begin();
         return s;
     }
 
@@ -28,7 +32,7 @@ class SchedulerTest {
     void tasksRunByTimeThenPriorityThenInsertionOrder() {
         Scheduler s = lockstep();
         s.schedule(2.0, Scheduler.NORMAL, record("b"));
-        s.schedule(1.0, Scheduler.HEARTBEAT, record("heartbeat"));
+        s.schedule(1.0, Scheduler.LATE, record("heartbeat"));
         s.schedule(1.0, Scheduler.NORMAL, record("timeout1"));
         s.schedule(1.0, Scheduler.NORMAL, record("timeout2"));
         s.schedule(0.5, Scheduler.NORMAL, record("a"));
@@ -49,11 +53,11 @@ class SchedulerTest {
     }
 
     @Test
-    void immediateTasksRunBeforeTimedOnesAtTheCurrentTime() {
+    void immediateTasksRunBeforeTimedOnesAtTheTimeTheyWereStampedWith() {
         Scheduler s = lockstep();
         s.schedule(1.0, Scheduler.NORMAL, t -> {
             log.add("first@" + t);
-            s.scheduleImmediate(record("immediate"));
+            s.scheduleImmediate(t, record("immediate"));
             s.schedule(1.0, Scheduler.NORMAL, record("sameTime"));
         });
         s.schedule(1.0, Scheduler.NORMAL, record("second"));
@@ -62,27 +66,31 @@ class SchedulerTest {
     }
 
     @Test
-    void aQueuedTaskIsNotQueuedTwice() {
+    void aHandleSaysWhetherItsTaskStillWaitsAndCancelsIt() {
         Scheduler s = lockstep();
-        Task motion = record("motion");
-        assertTrue(s.schedule(1.0, Scheduler.NORMAL, motion));
-        assertFalse(s.schedule(0.5, Scheduler.NORMAL, motion), "already queued: the earlier entry stays");
+        TaskHandle beat = s.schedule(1.0, Scheduler.LATE, record("beat"));
+        TaskHandle other = s.schedule(2.0, Scheduler.NORMAL, record("other"));
+        assertTrue(beat.isScheduled());
+        assertEquals(2, s.size());
+        assertTrue(beat.cancel());
+        assertFalse(beat.cancel(), "cancelled once");
+        assertFalse(beat.isScheduled());
         assertEquals(1, s.size());
         s.runUntilIdle();
-        assertEquals(Arrays.asList("motion@1.0"), log);
-        assertTrue(s.schedule(2.0, Scheduler.NORMAL, motion), "once run it can be queued again");
+        assertEquals(Arrays.asList("other@2.0"), log);
+        assertFalse(other.isScheduled(), "it ran");
+        assertFalse(other.cancel(), "a task that ran cannot be cancelled");
     }
 
     @Test
-    void cancelledTasksDoNotRun() {
+    void observersRunAfterEveryModelTaskDueThenAndAreNotCountedAsModelTasks() {
         Scheduler s = lockstep();
-        Task heartbeat = record("beat");
-        s.schedule(1.0, Scheduler.HEARTBEAT, heartbeat);
-        s.schedule(2.0, Scheduler.NORMAL, record("other"));
-        assertTrue(s.cancel(heartbeat));
-        assertFalse(s.cancel(heartbeat));
+        s.observeAt(1.0, record("picture"));
+        s.schedule(1.0, Scheduler.LATE, record("heartbeat"));
+        s.schedule(1.0, Scheduler.NORMAL, record("step"));
         s.runUntilIdle();
-        assertEquals(Arrays.asList("other@2.0"), log);
+        assertEquals(Arrays.asList("step@1.0", "heartbeat@1.0", "picture@1.0"), log);
+        assertEquals(2, s.modelTasksRun());
     }
 
     @Test
@@ -108,18 +116,92 @@ class SchedulerTest {
     void nothingRunsWhileTheClockIsStopped() {
         Scheduler s = lockstep();
         s.schedule(1.0, Scheduler.NORMAL, record("a"));
-        s.scheduleImmediate(record("immediate"));
+        s.scheduleImmediate(0.0, record("immediate"));
         s.stopClock();
         assertFalse(s.runNext());
-        s.startClock();
+        s.resumeClock();
         assertEquals(2, s.runUntilIdle());
+    }
+
+    @Test
+    void beforeTheRunBeginsInputsAreAppliedAtTimeZeroButNoTaskRuns() {
+        Scheduler s = new Scheduler(SimClock.lockstep());
+        InputQueue inputs = new InputQueue(s);
+        inputs.submit(input(1, false, "placement request"));
+        s.scheduleImmediate(0.0, record("immediate"));
+        assertFalse(s.runNext());
+        assertEquals(Arrays.asList("placement request@0.0"), log);
+        s.begin();
+        assertTrue(s.runNext());
+    }
+
+    @Test
+    void aHeldClockRunsWhatIsDueNowButDoesNotAdvance() {
+        Scheduler s = lockstep();
+        s.hold();
+        s.schedule(0.0, Scheduler.NORMAL, record("placement"));
+        s.schedule(5.0, Scheduler.NORMAL, record("later"));
+        assertEquals(1, s.runUntilIdle());
+        assertEquals(0.0, s.now());
+        s.release();
+        assertEquals(1, s.runUntilIdle());
+        assertEquals(Arrays.asList("placement@0.0", "later@5.0"), log);
+    }
+
+    @Test
+    void inputsAreAppliedAtTheNextBoundaryDeparturesFirstThenBySourceInArrivalOrder() {
+        Scheduler s = lockstep();
+        InputQueue inputs = new InputQueue(s);
+        s.schedule(1.0, Scheduler.NORMAL, t -> {
+            log.add("task@" + t);
+            inputs.submit(input(2, false, "b1"));
+            inputs.submit(input(1, false, "a1"));
+            inputs.submit(input(2, false, "b2"));
+            inputs.submit(input(3, true, "c leaves"));
+            inputs.submit(input(0, false, "view"));
+        });
+        s.schedule(2.0, Scheduler.NORMAL, record("next"));
+        s.runUntilIdle();
+        assertEquals(Arrays.asList("task@1.0", "c leaves@1.0", "view@1.0", "a1@1.0", "b1@1.0", "b2@1.0", "next@2.0"), log);
+    }
+
+    private Input input(int source, boolean departure, String name) {
+        return new Input() {
+            @Override
+            public int source() {
+                return source;
+            }
+
+            @Override
+            public boolean isDeparture() {
+                return departure;
+            }
+
+            @Override
+            public void apply(double simTime) {
+                log.add(name + "@" + simTime);
+            }
+        };
+    }
+
+    @Test
+    void inputsWaitWhileTheClockIsStopped() {
+        Scheduler s = lockstep();
+        InputQueue inputs = new InputQueue(s);
+        s.stopClock();
+        inputs.submit(input(1, false, "request"));
+        s.runUntilIdle();
+        assertTrue(log.isEmpty(), "the interlock holds inputs too");
+        s.resumeClock();
+        s.runUntilIdle();
+        assertEquals(Arrays.asList("request@0.0"), log);
     }
 
     @Test
     void aPacedClockRunsATaskOnlyWhenWallTimeTimesSpeedReachesIt() {
         long[] wallNanos = {0};
         Scheduler s = new Scheduler(SimClock.paced(() -> wallNanos[0], 20.0));
-        s.startClock();
+        s.begin();
         s.schedule(1.0, Scheduler.NORMAL, record("a"));
         wallNanos[0] = 40_000_000L;
         assertFalse(s.runNext(), "0.04 s of wall time at speed 20 is 0.8 s of simulation time");
@@ -134,16 +216,103 @@ class SchedulerTest {
     }
 
     @Test
-    void aStoppedPacedClockFreezesAndResumesFromWhereItStopped() {
+    void aStoppedPacedClockFreezesAndThenCatchesUpWithItsDeadlines() {
         long[] wallNanos = {0};
         Scheduler s = new Scheduler(SimClock.paced(() -> wallNanos[0], 1.0));
-        s.startClock();
-        wallNanos[0] = 500_000_000L;
+        s.begin();
+        for (int i = 1; i <= 10; i++) {
+            s.schedule(0.1 * i, Scheduler.NORMAL, record("step" + i));
+        }
+        wallNanos[0] = 150_000_000L;
+        assertTrue(s.runNext());
         s.stopClock();
-        wallNanos[0] = 10_000_000_000L;
-        assertEquals(0.5, s.now(), 1e-12, "ten seconds of handler time cost no simulation time");
-        s.startClock();
-        wallNanos[0] = 10_250_000_000L;
-        assertEquals(0.75, s.now(), 1e-12);
+        wallNanos[0] = 650_000_000L;
+        assertEquals(0.15, s.now(), 1e-12, "frozen while a client handles its event");
+        s.resumeClock();
+        assertEquals(5, s.runUntilIdle(), "the steps due by 0.65 s run back to back");
+        assertEquals(0.65, s.now(), 1e-12);
+    }
+
+    @Test
+    void inputsThatArrivedWhileTheClockWasStoppedAreStampedWithTheTimeItStoppedAt() {
+        long[] wallNanos = {0};
+        Scheduler s = new Scheduler(SimClock.paced(() -> wallNanos[0], 1.0));
+        InputQueue inputs = new InputQueue(s);
+        s.begin();
+        wallNanos[0] = 200_000_000L;
+        s.stopClock();
+        inputs.submit(input(1, false, "answer"));
+        wallNanos[0] = 700_000_000L;
+        s.resumeClock();
+        s.runUntilIdle();
+        assertEquals(Arrays.asList("answer@0.2"), log, "the half second the client took is not in the stamp");
+        assertEquals(0.7, s.now(), 1e-12, "but the clock catches up with it");
+    }
+
+    @Test
+    void aPacedClockNeverFallsMoreThanItsLagLimitBehind() {
+        long[] wallNanos = {0};
+        Scheduler s = new Scheduler(SimClock.paced(() -> wallNanos[0], 2.0));
+        s.begin();
+        s.stopClock();
+        wallNanos[0] = 60_000_000_000L;
+        s.resumeClock();
+        assertEquals(2.0 * SimClock.MAX_LAG_SECONDS, s.now(), 1e-9, "a minute's pause is not followed by a minute's burst");
+        wallNanos[0] += 500_000_000L;
+        assertEquals(2.0 * SimClock.MAX_LAG_SECONDS + 1.0, s.now(), 1e-9);
+    }
+
+    @Test
+    @Timeout(10)
+    void aThreadThatPumpsRunsDueTasksUnlessAnotherHoldsTheRightToRun() throws Exception {
+        Scheduler s = lockstep();
+        CountDownLatch inside = new CountDownLatch(1);
+        CountDownLatch leave = new CountDownLatch(1);
+        s.scheduleImmediate(0.0, t -> {
+            inside.countDown();
+            await(leave);
+        });
+        s.schedule(1.0, Scheduler.NORMAL, record("after"));
+        Thread holder = new Thread(s::runUntilIdle);
+        holder.start();
+        assertTrue(inside.await(5, TimeUnit.SECONDS));
+        s.pump(TimeUnit.SECONDS.toNanos(1));
+        assertTrue(log.isEmpty(), "the holder is busy; a pump must not run tasks beside it");
+        leave.countDown();
+        holder.join(5000);
+        assertEquals(Arrays.asList("after@1.0"), log, "the holder ran the rest itself");
+    }
+
+    @Test
+    @Timeout(10)
+    void theDispatchLoopWakesForInputsFromAnyThread() throws Exception {
+        Scheduler s = lockstep();
+        InputQueue inputs = new InputQueue(s);
+        Thread loop = new Thread(s::runLoop);
+        loop.start();
+        CountDownLatch applied = new CountDownLatch(1);
+        inputs.submit(new Input() {
+            @Override
+            public int source() {
+                return 1;
+            }
+
+            @Override
+            public void apply(double simTime) {
+                applied.countDown();
+            }
+        });
+        assertTrue(applied.await(5, TimeUnit.SECONDS));
+        s.shutdown();
+        loop.join(5000);
+        assertFalse(loop.isAlive());
+    }
+
+    private static void await(CountDownLatch latch) {
+        try {
+            latch.await(5, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 }

@@ -26,7 +26,7 @@ class SnapshotPublisherTest {
         simulation = new Simulation(SnapshotWorlds.whiteRoom(), SimulationSettings.lockstep(0.05, 1L), new RsLogger(null, false));
         scheduler = simulation.getScheduler();
         world = simulation.getWorld();
-        scheduler.startClock();
+        scheduler.begin();
     }
 
     @Test

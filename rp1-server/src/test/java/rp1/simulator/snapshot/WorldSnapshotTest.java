@@ -31,7 +31,7 @@ class WorldSnapshotTest {
     void paintHalfAMetre() throws Exception {
         world = new World(SnapshotWorlds.whiteRoom(), scheduler, 0.05, new Random(1));
         robot = world.addRobot(SnapshotWorlds.paintingRobot(), SnapshotWorlds.IGNORE);
-        scheduler.startClock();
+        scheduler.begin();
         SnapshotWorlds.paintForward(world, robot, 0.5, 0.0);
         scheduler.runUntilIdle();
     }

@@ -1,4 +1,4 @@
-package rp1.simulator;
+package rp1.simulator.net;
 
 import java.io.IOException;
 import java.io.OutputStream;
@@ -7,13 +7,15 @@ import java.util.function.Function;
 import rp1.rossum.RsConnection;
 import rp1.rossum.RsPipe;
 import rp1.rossum.RsRunnable;
+import rp1.simulator.Simulation;
 import rp1.simulator.session.ClientSession;
 
 /**
  * A client connected to a simulation in the same process through a pair of {@link RsPipe}s, with no
- * handshake, as RP1's dynamically loaded clients are (behavior.md section 3.4): the server's end is
- * attached and its reader started; the client is given the other ends. The caller then runs the
- * client's {@code initialize()} and {@code run()}.
+ * handshake, as RP1's dynamically loaded clients are (docs/behavior.md section 3.4): the server's end
+ * is attached and its reader thread started (which runs the tasks due after each message it hands
+ * over); the client is given the other ends. The caller then runs the client's {@code initialize()}
+ * and {@code run()}.
  */
 public final class InProcessClient {
     private final RsRunnable client;
@@ -41,7 +43,7 @@ public final class InProcessClient {
         this.client = client;
         this.connection = connection;
         connection.setInputOutputStreams(toServer.getInputStream(), outbound.apply(toClient));
-        session = simulation.attach(connection, description);
+        session = simulation.attach(connection, description, Simulation.Link.READER);
         Thread reader = new Thread(connection, "connection " + description);
         reader.setDaemon(true);
         reader.start();
