@@ -33,6 +33,7 @@ class PlanRoundTripTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("plans")
     void clientReceivesTheSameObjects(Path file) throws IOException {
+        TestPlans.assumePresent(file);
         RsPlan sent = TestPlans.parse(file);
         RsPlan got = PlanCodec.decode(PlanCodec.encode(sent));
         assertEquals(Objects.toString(sent.getCaption(), ""), got.getCaption());
