@@ -80,6 +80,18 @@ class ContactSensorScenarioTest {
             }
         }
 
+        /**
+         * The bumper went hot against {@code wall} when the first motion halted by collision at
+         * {@code hit}, the next motion released it at once, and the tail sent nothing.
+         */
+        void assertOnlyTheBumperPressedThenReleased(double hit, String wall) {
+            assertEquals(2, contacts().size(), client.transcript());
+            assertContact(0, "bumper", true, hit, wall);
+            assertContact(1, "bumper", false, hit, "");
+            assertTailSilent();
+            assertHalt(0, RsMotionHaltedEvent.HALTED_ON_COLLISION, hit);
+        }
+
         void assertHalt(int index, int cause, double time) {
             RsMotionHaltedEvent h = halt(index);
             assertEquals(cause, h.causeOfHalt, ScenarioClient.describe(h));
@@ -98,11 +110,7 @@ class ContactSensorScenarioTest {
             Run r = new Run(s, "west", new RsMotionRequest(1.0, 0.0, 10.0), BACK_OFF);
             double hit = stopBefore(3.835);
             assertEquals(3.834, hit, EPS);
-            assertEquals(2, r.contacts().size(), r.client.transcript());
-            r.assertContact(0, "bumper", true, hit, "thin");
-            r.assertContact(1, "bumper", false, hit, "");
-            r.assertTailSilent();
-            r.assertHalt(0, RsMotionHaltedEvent.HALTED_ON_COLLISION, hit);
+            r.assertOnlyTheBumperPressedThenReleased(hit, "thin");
             r.assertHalt(1, RsMotionHaltedEvent.HALTED_ON_COMPLETION, hit + 0.2);
         }
     }
@@ -118,11 +126,7 @@ class ContactSensorScenarioTest {
             double turn = Math.atan2(2.08, 0.16) - Math.acos(0.99 / Math.hypot(0.16, 2.08));
             double hit = stopBefore(turn / 0.5);
             assertEquals(0.835, hit, EPS);
-            assertEquals(2, r.contacts().size(), r.client.transcript());
-            r.assertContact(0, "bumper", true, hit, "block");
-            r.assertContact(1, "bumper", false, hit, "");
-            r.assertTailSilent();
-            r.assertHalt(0, RsMotionHaltedEvent.HALTED_ON_COLLISION, hit);
+            r.assertOnlyTheBumperPressedThenReleased(hit, "block");
         }
     }
 
@@ -137,11 +141,7 @@ class ContactSensorScenarioTest {
             double turn = Math.atan2(0.08, 0.16) - Math.acos(0.17 / Math.hypot(0.16, 0.08));
             double hit = stopBefore(turn);
             assertEquals(0.147, hit, EPS);
-            assertEquals(2, r.contacts().size(), r.client.transcript());
-            r.assertContact(0, "bumper", true, hit, "block");
-            r.assertContact(1, "bumper", false, hit, "");
-            r.assertTailSilent();
-            r.assertHalt(0, RsMotionHaltedEvent.HALTED_ON_COLLISION, hit);
+            r.assertOnlyTheBumperPressedThenReleased(hit, "block");
         }
     }
 
