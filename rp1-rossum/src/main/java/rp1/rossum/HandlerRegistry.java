@@ -33,7 +33,7 @@ final class HandlerRegistry {
     /**
      * Removes every registration of {@code handler} for the key, as RP1 0.60 does: a handler added
      * twice is gone after one removal, so the key may be left without handlers and the next add for
-     * it subscribes again (protocol.md section 10.1).
+     * it subscribes again (protocol.md section 10).
      */
     synchronized void remove(int code, int index, RsEventHandler handler) {
         List<RsEventHandler> list = handlers.get(key(code, index));
