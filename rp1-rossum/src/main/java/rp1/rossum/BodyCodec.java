@@ -16,7 +16,7 @@ import java.util.List;
  * before any byte is written. Decoding gives every part the id the sender used, and the wheels of a
  * wheel system the ids following the system's, without touching this process's part counter.
  */
-public final class BodyCodec {
+final class BodyCodec {
     /** Marks an empty part slot on the wire; nothing follows it. */
     private static final int EMPTY_SLOT = -1;
     private static final int DIFFERENTIAL = 0;
@@ -33,7 +33,7 @@ public final class BodyCodec {
      * @throws IllegalArgumentException if the body has no part that can be transmitted, or a name is
      *         too long for the wire
      */
-    public static byte[] encode(RsBody body) {
+    static byte[] encode(RsBody body) {
         WireOut out = new WireOut();
         encode(out, body);
         return out.toByteArray();
@@ -44,7 +44,7 @@ public final class BodyCodec {
      *
      * @throws RsProtocolException naming the field if the bytes are malformed or truncated
      */
-    public static RsBody decode(byte[] payload) throws IOException {
+    static RsBody decode(byte[] payload) throws IOException {
         return decode(WireIn.of(payload));
     }
 

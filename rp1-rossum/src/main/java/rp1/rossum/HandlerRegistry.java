@@ -30,11 +30,15 @@ final class HandlerRegistry {
         handlers.computeIfAbsent(key(code, index), k -> new ArrayList<>()).add(handler);
     }
 
-    /** Removes the first registration of {@code handler} for the key, if any. */
+    /**
+     * Removes every registration of {@code handler} for the key, as RP1 0.60 does: a handler added
+     * twice is gone after one removal, so the key may be left without handlers and the next add for
+     * it subscribes again (protocol.md section 10).
+     */
     synchronized void remove(int code, int index, RsEventHandler handler) {
         List<RsEventHandler> list = handlers.get(key(code, index));
         if (list != null) {
-            list.remove(handler);
+            list.removeIf(handler::equals);
         }
     }
 

@@ -13,7 +13,7 @@ import java.io.IOException;
  *
  * <p>Socket-free: {@link #encode(RsPlan)} and {@link #decode(byte[])} work on byte arrays.
  */
-public final class PlanCodec {
+final class PlanCodec {
     private PlanCodec() {
     }
 
@@ -23,7 +23,7 @@ public final class PlanCodec {
      * @throws IllegalArgumentException if the plan holds an object of a type the protocol cannot carry
      *     or a string longer than the wire format allows
      */
-    public static byte[] encode(RsPlan plan) {
+    static byte[] encode(RsPlan plan) {
         WireOut out = new WireOut();
         encode(out, plan);
         return out.toByteArray();
@@ -35,7 +35,7 @@ public final class PlanCodec {
      * @return the plan, or null if the sender had none
      * @throws RsProtocolException if the bytes are not a well-formed plan, naming the field
      */
-    public static RsPlan decode(byte[] bytes) throws IOException {
+    static RsPlan decode(byte[] bytes) throws IOException {
         ByteArrayInputStream buffer = new ByteArrayInputStream(bytes);
         RsPlan plan = decode(new WireIn(new DataInputStream(buffer)));
         if (buffer.available() > 0) {

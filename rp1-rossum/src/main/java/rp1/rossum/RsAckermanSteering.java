@@ -28,8 +28,6 @@ public class RsAckermanSteering extends RsWheelSystem {
     protected double depictionSteeringAngle;
     protected boolean defaultWheelsAdded;
 
-    private final double innerMaxAngle;
-
     /**
      * @param trackWidth distance between left and right wheels, metres
      * @param wheelBase distance between the front and rear axles, metres
@@ -43,7 +41,7 @@ public class RsAckermanSteering extends RsWheelSystem {
         this.wheelBase = wheelBase;
         this.driveWheelRadius = driveWheelRadius;
         this.dualSteering = dualSteering;
-        innerMaxAngle = Math.min(maxAbsInnerWheelSteeringAngle, MAX_INNER_ANGLE);
+        double innerMaxAngle = Math.min(maxAbsInnerWheelSteeringAngle, MAX_INNER_ANGLE);
         minTurnRadius = steeringBase() / Math.tan(innerMaxAngle) + trackWidth / 2.0;
         maxAbsSteeringAngle = Math.atan(steeringBase() / minTurnRadius);
         name = "Ackerman Steering";
@@ -75,32 +73,29 @@ public class RsAckermanSteering extends RsWheelSystem {
     }
 
     /**
-     * Adds four wheels, each drawn as a wheelRadius*2 by wheelWidth rectangle on its hub, built in
-     * this order: "left rear wheel" and "right rear wheel" on the rear axle, "left front wheel" and
-     * "right front wheel" on the front axle, at y = +-trackWidth/2. Without dual steering the rear
-     * axle is the body's y axis (x = 0) and the front axle is at x = wheelBase; only the front wheels
-     * steer. With dual steering the axles are at x = -wheelBase/2 and +wheelBase/2 and all four
-     * wheels steer. A steering wheel carries a stub axle (its steering knuckle) drawn as a
-     * stubLength by stubWidth bar from its hub towards the centre line, which turns with the wheel.
+     * Adds four wheels as RP1 0.60 builds them, in this order: rear left, rear right, front left,
+     * front right (left is y = +trackWidth/2). Without dual steering the rear axle is the body's y
+     * axis (x = 0) and the front axle is at x = wheelBase; with dual steering the axles are at
+     * x = -wheelBase/2 and +wheelBase/2. Each wheel is drawn as a wheelRadius*2 by wheelWidth
+     * rectangle on its hub with a stub axle (stubLength by stubWidth) reaching from the hub towards
+     * the centre line. The wheels keep the default name "Unnamed" and all four, rear ones included,
+     * get the derived central limit {@link #getMaxAbsSteeringAngle()} as their steering limit, so
+     * all report themselves steerable. A wheel on the body's y axis is never turned by
+     * {@link #setSteeringAngle}, so without dual steering only the front pair is drawn steered.
      */
     public void addDefaultWheels(double wheelRadius, double wheelWidth, double stubLength, double stubWidth) {
         double rearX = dualSteering ? -wheelBase / 2.0 : 0.0;
         double frontX = dualSteering ? wheelBase / 2.0 : wheelBase;
-        if (dualSteering) {
-            addSteeringWheel("left rear wheel", rearX, 1, wheelRadius, wheelWidth, stubLength, stubWidth);
-            addSteeringWheel("right rear wheel", rearX, -1, wheelRadius, wheelWidth, stubLength, stubWidth);
-        } else {
-            addAxleWheels(rearX, wheelRadius, wheelWidth, "left rear wheel", "right rear wheel");
-        }
-        addSteeringWheel("left front wheel", frontX, 1, wheelRadius, wheelWidth, stubLength, stubWidth);
-        addSteeringWheel("right front wheel", frontX, -1, wheelRadius, wheelWidth, stubLength, stubWidth);
+        addDefaultWheel(rearX, 1, wheelRadius, wheelWidth, stubLength, stubWidth);
+        addDefaultWheel(rearX, -1, wheelRadius, wheelWidth, stubLength, stubWidth);
+        addDefaultWheel(frontX, 1, wheelRadius, wheelWidth, stubLength, stubWidth);
+        addDefaultWheel(frontX, -1, wheelRadius, wheelWidth, stubLength, stubWidth);
         defaultWheelsAdded = true;
         setSteeringAngle(depictionSteeringAngle);
     }
 
     /** side = +1 for the left wheel (y > 0), -1 for the right one. */
-    private void addSteeringWheel(String wheelName, double x, int side, double radius, double width,
-                                  double stubLength, double stubWidth) {
+    private void addDefaultWheel(double x, int side, double radius, double width, double stubLength, double stubWidth) {
         double y = side * trackWidth / 2.0;
         double[] p = {
             -radius, width / 2, -radius, -width / 2, -stubWidth / 2, -width / 2, -stubWidth / 2, -stubLength,
@@ -109,9 +104,7 @@ public class RsAckermanSteering extends RsWheelSystem {
             p[i] += x;
             p[i + 1] = y + side * p[i + 1];
         }
-        RsWheel wheel = new RsWheel(p, p.length / 2, x, y, radius, innerMaxAngle);
-        wheel.setName(wheelName);
-        addWheel(wheel);
+        addWheel(new RsWheel(p, p.length / 2, x, y, radius, maxAbsSteeringAngle));
     }
 
     /**

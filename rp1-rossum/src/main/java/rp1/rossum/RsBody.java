@@ -332,35 +332,35 @@ public class RsBody extends RsComponent {
     }
 
     /**
-     * RP1 0.60's contact-sensor pre-pass, reproduced: each sensor that would hit a wall during the whole
-     * motion is flagged with the running minimum contact time over the sensors examined so far and the
-     * wall that last lowered it; afterwards only flags whose time exceeds the overall minimum are
-     * cleared, so a sensor examined after the earliest hit stays flagged even if its own hit is later.
+     * RP1 0.60's contact-sensor pre-pass (behavior.md section 6.3): the contact sensors, in part order,
+     * are swept against every wall, in plan order, over the whole requested motion, all sharing one
+     * running minimum of the contact time. A sensor is flagged only when one of its contacts comes
+     * strictly earlier than that minimum; it then records the new minimum and the wall that set it.
+     * A sensor whose contacts are all later than (or as late as) the minimum so far is not flagged,
+     * however real those contacts are. Afterwards a flag recorded before a later sensor lowered the
+     * minimum is withdrawn, so only the sensor holding the earliest contact stays flagged. The
+     * general search over all parts that follows never re-examines these flags, which is why a
+     * sensor can still go hot although the chassis stopped the motion before the sensor touched.
      */
     private void flagContactSensors(RsWall[] walls) {
         List<RsBodyContactSensor> sensors = partsOf(RsBodyContactSensor.class);
-        double best = Double.POSITIVE_INFINITY;
-        String bestWall = null;
+        double earliest = Double.POSITIVE_INFINITY;
         for (RsBodyContactSensor s : sensors) {
+            s.setCollision(false, null);
+            s.setCollisionTime(Double.POSITIVE_INFINITY);
             RsSegment[] body = BodyOutline.map(s.outline(), motion.transform0);
-            boolean hit = false;
             for (RsWall wall : walls) {
                 RsSegment[] edges = wall.getSegmentArray();
                 double t = motion.contactTime(body, body.length, edges, edges.length);
-                if (Double.isInfinite(t)) {
-                    continue;
-                }
-                hit = true;
-                if (t < best) {
-                    best = t;
-                    bestWall = wall.getName();
+                if (t < earliest) {
+                    earliest = t;
+                    s.setCollision(true, wall.getName());
+                    s.setCollisionTime(t);
                 }
             }
-            s.setCollision(hit, hit ? bestWall : null);
-            s.setCollisionTime(best);
         }
         for (RsBodyContactSensor s : sensors) {
-            if (s.getCollision() && s.getCollisionTime() > best) {
+            if (s.getCollision() && s.getCollisionTime() > earliest) {
                 s.setCollision(false, null);
             }
         }

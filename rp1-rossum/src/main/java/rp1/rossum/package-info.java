@@ -8,6 +8,22 @@
  * and the geometry and motion classes the simulator shares with clients live here too.
  *
  * <p>Names, signatures and behaviour are those of RP1 0.60, so that its client programs compile and
- * run unchanged. The messages exchanged are described in {@code docs/protocol.md}.
+ * run unchanged. The messages exchanged are described in {@code docs/protocol.md}. The few public
+ * types and members beyond 0.60 are there on purpose; the library's tests keep a list of them, each
+ * with its reason, and fail on any other.
+ *
+ * <p>Internal classes, package-private and free to change: the wire format, that is the codecs of
+ * a body specification ({@code BodyCodec}), of a plan event ({@code PlanCodec}), of the other events
+ * ({@code EventCodec}) and of requests ({@code RequestCodec}, decoding into a {@code RequestSink}),
+ * over the byte helpers {@code WireIn}, {@code WireOut} and {@code WireLimits}; the client's table of
+ * event handlers ({@code HandlerRegistry}); and model helpers ({@code MotionRequests},
+ * {@code BodyOutline}, {@code SweptContact}, {@code PlanLabels}, {@code PlanPolygons}).
+ *
+ * <p>Where collisions live: the simulator's robots are {@link rp1.rossum.RsBody} objects, so
+ * collisions with walls are computed here. When a motion starts, {@code RsBody} flags the contact
+ * sensors and cuts the motion before its first contact with a wall, found over the whole motion at
+ * once by the swept-contact search ({@code SweptContact}, reached through
+ * {@link rp1.rossum.RsMotion}). Robots touching other robots are the simulator's business (RP1 0.60
+ * let them pass through each other): see {@code rp1.simulator.world.RobotContacts} in the server.
  */
 package rp1.rossum;

@@ -1,91 +1,49 @@
 package rp1.rossum;
 
-import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.fail;
 
-import java.io.IOException;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Executable;
 import java.lang.reflect.Field;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
 
 /**
- * Source compatibility: every public type of RP1 0.60 and every public or protected member listed in
- * protocol.md Appendix A exists here with the same kind, superclass, interfaces, modifiers, parameter
- * and return types, checked exceptions and constant values. Programs written for the original
- * compile against this library only if this holds. The appendix is read from the shared spec, so the
- * test follows it exactly.
+ * Source compatibility: every public type of RP1 0.60 and every public or protected member of it (as
+ * listed in api-0.60.txt beside this test) exists here with the same kind, superclass, interfaces,
+ * modifiers, parameter and return types, checked exceptions and constant values. Programs written
+ * for the original compile against this library only if this holds.
  */
 class ApiSignatureTest {
-    private static final Pattern TYPE = Pattern.compile(
-            "^public (abstract )?(class|interface) (\\w+)(?: extends ([\\w.]+))?(?: implements ([\\w.,]+))? \\{$");
-    private static final Pattern FIELD = Pattern.compile(
-            "^(public|protected) ((?:static |final )*)([\\w.<>\\[\\]]+) (\\w+)(?: = (.+))?;$");
-    private static final Pattern EXECUTABLE = Pattern.compile(
-            "^(public|protected) ((?:static |final |abstract |synchronized )*)(?:([\\w.<>\\[\\]]+) )?(\\w+)\\(([^)]*)\\)(?: throws ([\\w, ]+))?;$");
-
     private final List<String> problems = new ArrayList<>();
 
     @Test
-    void everyTypeAndMemberOfAppendixAExists() throws Exception {
-        List<String> lines = appendixA();
-        String pkg = null;
-        Class<?> current = null;
+    void everyTypeAndMemberOfTheOriginalApiExists() {
         int types = 0;
         int members = 0;
-        for (String raw : lines) {
-            String line = raw.trim();
-            if (line.startsWith("### A.1")) {
-                pkg = "rp1.rossum";
-            } else if (line.startsWith("### A.2")) {
-                pkg = "rp1.rossum.event";
-            } else if (line.startsWith("### A.3")) {
-                pkg = "rp1.rossum.request";
-            }
-            Matcher t = TYPE.matcher(line);
-            if (t.matches()) {
-                current = checkType(pkg, t);
-                types++;
-            } else if (line.equals("}")) {
-                current = null;
-            } else if (current != null && line.endsWith(";")) {
-                checkMember(current, line);
+        for (ApiList.Type type : ApiList.read()) {
+            Class<?> c = checkType(type.pkg, type.declaration);
+            types++;
+            for (String line : type.members) {
+                if (c != null) {
+                    checkMember(c, line);
+                }
                 members++;
             }
         }
-        assertTrue(types >= 115, "read " + types + " types from Appendix A");
+        assertEquals(115, types, "types read from api-0.60.txt");
+        assertEquals(965, members, "members read from api-0.60.txt");
         if (!problems.isEmpty()) {
             fail(problems.size() + " incompatibilities with the RP1 0.60 API (" + types + " types, " + members
                     + " members checked):\n" + String.join("\n", problems));
         }
-    }
-
-    private static List<String> appendixA() throws IOException {
-        String root = System.getProperty("rp1.root", ".");
-        Path spec = Paths.get(root, "..", "shared", "spec", "protocol.md");
-        if (!Files.isRegularFile(spec)) {
-            fail("the API reference " + spec + " is missing: the shared spec must be checked out beside the project");
-        }
-        List<String> all = Files.readAllLines(spec, StandardCharsets.UTF_8);
-        for (int i = 0; i < all.size(); i++) {
-            if (all.get(i).startsWith("## Appendix A")) {
-                return all.subList(i, all.size());
-            }
-        }
-        fail("no Appendix A in " + spec);
-        return null;
     }
 
     private Class<?> checkType(String pkg, Matcher t) {
@@ -110,7 +68,7 @@ class ApiSignatureTest {
         if (t.group(4) != null) {
             if (isInterface) {
                 checkInterfaces(c, t.group(4));
-            } else if (c.getSuperclass() == null || !c.getSuperclass().getSimpleName().equals(simple(t.group(4)))) {
+            } else if (c.getSuperclass() == null || !c.getSuperclass().getSimpleName().equals(ApiList.simple(t.group(4)))) {
                 problems.add(name + ": superclass should be " + t.group(4) + ", is " + c.getSuperclass());
             }
         }
@@ -122,30 +80,25 @@ class ApiSignatureTest {
 
     private void checkInterfaces(Class<?> c, String list) {
         for (String i : list.split(",")) {
-            boolean found = Arrays.stream(c.getInterfaces()).anyMatch(x -> x.getSimpleName().equals(simple(i.trim())));
+            boolean found = Arrays.stream(c.getInterfaces()).anyMatch(x -> x.getSimpleName().equals(ApiList.simple(i.trim())));
             if (!found) {
                 problems.add(c.getName() + ": should directly implement/extend " + i.trim());
             }
         }
     }
 
-    private static String simple(String name) {
-        int dot = name.lastIndexOf('.');
-        return dot < 0 ? name : name.substring(dot + 1);
-    }
-
     private void checkMember(Class<?> c, String line) {
-        Matcher e = EXECUTABLE.matcher(line);
+        Matcher e = ApiList.EXECUTABLE.matcher(line);
         if (e.matches()) {
             checkExecutable(c, e, line);
             return;
         }
-        Matcher f = FIELD.matcher(line);
+        Matcher f = ApiList.FIELD.matcher(line);
         if (f.matches()) {
             checkField(c, f, line);
             return;
         }
-        problems.add("unparsed appendix line in " + c.getSimpleName() + ": " + line);
+        problems.add("unparsed api-0.60.txt line in " + c.getSimpleName() + ": " + line);
     }
 
     private void checkField(Class<?> c, Matcher f, String line) {
@@ -302,7 +255,6 @@ class ApiSignatureTest {
     }
 
     private static boolean typeMatches(Class<?> actual, String expected) {
-        String erased = expected.replaceAll("<.*>", "");
-        return actual.getSimpleName().equals(simple(erased));
+        return actual.getSimpleName().equals(ApiList.simple(expected));
     }
 }

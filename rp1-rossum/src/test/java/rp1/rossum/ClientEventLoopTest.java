@@ -17,6 +17,9 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
+import rp1.rossum.event.RsContactSensorEvent;
+import rp1.rossum.event.RsContactSensorEventHandler;
+import rp1.rossum.event.RsEvent;
 import rp1.rossum.event.RsMouseClickEventHandler;
 import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.event.RsTimeoutEventHandler;
@@ -100,6 +103,56 @@ class ClientEventLoopTest {
                 "a handler added before the connection is never subscribed, later adds for that key send nothing; "
                         + "only the first handler of a key subscribes; every removal unsubscribes; the no-argument "
                         + "removal keeps the local handlers, so the next add sends nothing");
+    }
+
+    @Test
+    void removingAHandlerAddedTwiceRemovesItEntirelySoTheNextAddSubscribesAgain() throws Exception {
+        try (Link link = Link.piped(quietClient(), new RsConnection())) {
+            ServerRecorder server = new ServerRecorder(link.connection);
+            link.startServer().startClientLoop();
+            RsClient c = link.client;
+            RsBodyContactSensor bumper = new RsBodyContactSensor(new double[] {0, 0, 0.1, 0, 0.1, 0.1}, 3);
+            int id = bumper.getID();
+            Capture<Double> calls = new Capture<>();
+            RsContactSensorEventHandler h = e -> calls.add(e.simTime);
+            c.addContactSensorEventHandler(bumper, h);
+            c.addContactSensorEventHandler(bumper, h);
+            c.removeContactSensorEventHandler(bumper, h);
+            c.addContactSensorEventHandler(bumper, h);
+            assertSubscription(server.received.next(), id, true);
+            assertSubscription(server.received.next(), id, false);
+            assertSubscription(server.received.next(), id, true);
+            assertTrue(link.connection.isClientSubscribedToEvent(RsEvent.EVT_CONTACT_SENSOR, id),
+                    "the sensor's events reach the client again");
+
+            link.connection.sendContactSensorEvent(new RsContactSensorEvent(1.0, id, true, "wall"));
+            link.connection.sendContactSensorEvent(new RsContactSensorEvent(2.0, id, false, ""));
+            assertEquals(1.0, calls.next());
+            assertEquals(2.0, calls.next(), "the handler is registered once, so it runs once per event");
+            assertNull(calls.poll(100));
+        }
+    }
+
+    private static void assertSubscription(Object received, int index, boolean enable) {
+        RsSubscriptionRequest r = (RsSubscriptionRequest) received;
+        assertEquals(RsEvent.EVT_CONTACT_SENSOR + "/" + index + " " + enable, r.eventCode + "/" + r.eventIndex + " " + r.eventEnable);
+    }
+
+    @Test
+    void aLocalHandlerAddedTwiceIsGoneAfterOneRemoval() throws Exception {
+        try (Link link = Link.piped(quietClient(), new RsConnection())) {
+            List<Integer> removed = new ArrayList<>();
+            Capture<Integer> kept = new Capture<>();
+            RsTimeoutEventHandler h = e -> removed.add(e.timeoutIndex);
+            link.client.addTimeoutEventHandler(h);
+            link.client.addTimeoutEventHandler(h);
+            link.client.addTimeoutEventHandler(e -> kept.add(e.timeoutIndex));
+            link.client.removeTimeoutEventHandler(h);
+            link.startServer().startClientLoop();
+            link.connection.sendTimeoutEvent(new RsTimeoutEvent(1.0, 1));
+            assertEquals(1, kept.next());
+            assertEquals(List.of(), removed);
+        }
     }
 
     /** Decodes a stream of subscription requests (37 bytes each: header, prefix, code, index, flag). */

@@ -186,32 +186,6 @@ class CollisionTest {
         assertTrue(bumper.getHot());
     }
 
-    @Test
-    void aBumperExaminedAfterTheEarliestHitKeepsItsFlagAndThatWallsName() {
-        RsBodyContactSensor front = frontBumper();
-        RsBodyContactSensor rear = new RsBodyContactSensor(TestPlans.rect(-0.2, -0.05, -0.15, 0.05), 4);
-        RsBody b = bumperRobot(rear, front);
-        RsPlan plan = wallBetween(-0.1, 0.0);
-        TestPlans.box(plan, "far wall", 3.0, -5, 3.1, 5);
-        b.place(0.0, 1.0, 0.0, 0.0);
-        b.computeMotion(0.0, new RsMotionRequest(-1.0, 0.0, 5.0), plan);
-        assertTrue(rear.getCollision());
-        assertTrue(front.getCollision());
-        assertEquals("wall", front.getCollisionObjectName());
-        assertEquals(rear.getCollisionTime(), front.getCollisionTime());
-    }
-
-    @Test
-    void aBumperExaminedBeforeAnEarlierHitLosesItsFlag() {
-        RsBodyContactSensor front = frontBumper();
-        RsBodyContactSensor rear = new RsBodyContactSensor(TestPlans.rect(-0.2, -0.05, -0.15, 0.05), 4);
-        RsBody b = bumperRobot(front, rear);
-        b.place(0.0, 1.0, 0.0, 0.0);
-        b.computeMotion(0.0, new RsMotionRequest(-1.0, 0.0, 5.0), wallBetween(-0.1, 0.0));
-        assertEquals(false, front.getCollision());
-        assertTrue(rear.getCollision());
-    }
-
     /** A bumper robot that drove from the origin into the wall of {@code plan} and stopped there. */
     private static RsBody drivenIntoWall(RsBodyContactSensor bumper, RsPlan plan) {
         RsBody b = bumperRobot(bumper);

@@ -127,30 +127,32 @@ class SteeringTest {
     }
 
     @Test
-    void atFullLockTheInnerFrontWheelIsAtItsOwnLimit() {
+    void atFullLockTheInnerFrontWheelReachesTheInnerWheelLimitAndTheRearWheelsStayStraight() {
         RsAckermanSteering a = new RsAckermanSteering(0.5, 1.0, 0.1, Math.toRadians(45), false);
         a.addDefaultWheels(0.1, 0.05, 0.1, 0.02);
         a.setSteeringAngle(a.getMaxAbsSteeringAngle());
         RsWheel[] w = a.getWheels();
-        assertEquals("left front wheel", w[2].getName());
-        assertEquals(Math.toRadians(45), w[2].getSteeringAngle(), 1e-9);
+        assertEquals(Math.toRadians(45), w[2].getSteeringAngle(), 1e-9, "front left, the inner wheel of a left turn");
         assertEquals(Math.atan2(1.0, 1.5), w[3].getSteeringAngle(), 1e-9);
-        assertEquals(0.0, w[0].getSteeringAngle());
+        assertEquals(0.0, w[0].getSteeringAngle(), "steerable, but on the rear axle (x = 0) it never turns");
+        assertEquals(0.0, w[1].getSteeringAngle());
     }
 
     @Test
-    void ackermanDefaultWheelsSitOnTheAxlesAndFollowTheSystemId() {
+    void ackermanDefaultWheelsAreFourUnnamedWheelsSteerableUpToTheCentralLimitRearLeftFirst() {
         RsAckermanSteering a = new RsAckermanSteering(0.5, 1.0, 0.1, Math.toRadians(45), false);
         a.addDefaultWheels(0.1, 0.05, 0.1, 0.02);
         RsWheel[] w = a.getWheels();
         assertEquals(4, w.length);
-        assertEquals(0.0, w[0].getX());
-        assertEquals(0.25, w[0].getY());
-        assertEquals(1.0, w[3].getX());
-        assertEquals(-0.25, w[3].getY());
-        assertEquals(false, w[0].isWheelSteerable());
-        assertEquals(true, w[2].isWheelSteerable());
-        assertEquals(a.getID() + 4, w[3].getID());
+        double[][] hubs = {{0.0, 0.25}, {0.0, -0.25}, {1.0, 0.25}, {1.0, -0.25}};
+        for (int k = 0; k < 4; k++) {
+            assertEquals(hubs[k][0], w[k].getX(), "wheel " + k);
+            assertEquals(hubs[k][1], w[k].getY(), "wheel " + k);
+            assertEquals("Unnamed", w[k].getName());
+            assertEquals(true, w[k].isWheelSteerable(), "wheel " + k);
+            assertEquals(a.getMaxAbsSteeringAngle(), w[k].getMaxAbsSteeringAngle(), "the derived central limit, atan(0.8)");
+            assertEquals(a.getID() + 1 + k, w[k].getID());
+        }
     }
 
     @Test

@@ -40,6 +40,7 @@ class PlanMutationTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("plans")
     void mutantsParseOrFailCleanly(Path file) throws IOException {
+        TestPlans.assumePresent(file);
         String text = Files.readString(file, StandardCharsets.UTF_8);
         List<String> pieces = pieces(text);
         Random random = new Random(file.getFileName().toString().hashCode());

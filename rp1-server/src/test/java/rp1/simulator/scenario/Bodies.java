@@ -82,6 +82,19 @@ final class Bodies {
         return body;
     }
 
+    /**
+     * The bumper robot with a rear contact sensor "tail" added after the bumper, its mirror image:
+     * from x = -0.16 to -0.12, 16 cm wide.
+     */
+    static RsBody withBumperAndTail(String name) {
+        RsBody body = withBumper(name);
+        RsBodyContactSensor tail = new RsBodyContactSensor(new double[] {
+            -0.16, -0.08, -0.12, -0.08, -0.12, 0.08, -0.16, 0.08}, 4);
+        tail.setName("tail");
+        body.addPart(tail);
+        return body;
+    }
+
     /** A small box in front of the centre, from x0 to x1, 5 cm wide. */
     static double[] box(double x0, double x1) {
         return new double[] {x0, -0.025, x1, -0.025, x1, 0.025, x0, 0.025};

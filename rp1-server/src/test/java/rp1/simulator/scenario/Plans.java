@@ -23,4 +23,12 @@ final class Plans {
 
     /** The hall with a 1 cm thick wall "thin" across it at x = 5 (faces at 4.995 and 5.005). */
     static final String HALL_WITH_THIN_WALL = HALL + "wall thin { geometry: 5, 0, 5, 4, 0.01; }\n";
+
+    /** The hall with a 2 cm thick wall "block" across it at {@code x} (faces at x - 0.01 and x + 0.01). */
+    static String hallWithBlockAt(double x) {
+        return HALL + "wall block { geometry: " + x + ", 0, " + x + ", 4, 0.02; }\n";
+    }
+
+    /** The hall with a placement "slant" at (0.5, 2) heading 70 degrees: its back faces the west wall obliquely. */
+    static final String HALL_WITH_SLANT = HALL + "placement slant { geometry: 0.5, 2, 70, 0.1; }\n";
 }
