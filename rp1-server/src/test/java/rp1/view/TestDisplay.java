@@ -34,20 +34,26 @@ final class TestDisplay implements AutoCloseable {
     }
 
     /**
-     * The display named by {@code DISPLAY} if it is set; otherwise an Xvfb found on {@code PATH},
-     * started on a display number it chooses itself (so parallel runs on one machine do not clash),
-     * with its messages in {@code logFile}. Aborts the calling test if there is neither.
+     * The display named by {@code DISPLAY} if it is set and answers; otherwise an Xvfb found on
+     * {@code PATH}, started on a display number it chooses itself (so parallel runs on one machine do
+     * not clash), with its messages in {@code logFile}. Aborts the calling test if there is neither.
      */
     static TestDisplay openOrSkip(Path logFile) throws IOException, InterruptedException {
         String display = System.getenv("DISPLAY");
-        if (display != null && !display.isEmpty()) {
+        String without;
+        if (display == null || display.isEmpty()) {
+            without = "DISPLAY is not set";
+        } else if (XDisplayAddress.answers(display)) {
             return new TestDisplay(display, null);
+        } else {
+            // A Gradle daemon keeps the DISPLAY it was started with, which may be long gone.
+            without = "DISPLAY=" + display + " does not answer";
         }
         Optional<Path> xvfb = onPath("Xvfb");
         if (xvfb.isEmpty()) {
-            return skip("DISPLAY is not set and Xvfb is not on the PATH (Debian: apt-get install -y xvfb)");
+            return skip(without + " and Xvfb is not on the PATH (Debian: apt-get install -y xvfb)");
         }
-        return start(xvfb.get(), logFile);
+        return start(xvfb.get(), without, logFile);
     }
 
     /**
@@ -78,7 +84,7 @@ final class TestDisplay implements AutoCloseable {
      * Starts Xvfb with {@code -displayfd 1}: once it accepts clients it writes the number of the
      * display it took to its standard output.
      */
-    private static TestDisplay start(Path xvfb, Path logFile) throws IOException, InterruptedException {
+    private static TestDisplay start(Path xvfb, String without, Path logFile) throws IOException, InterruptedException {
         Files.createDirectories(logFile.toAbsolutePath().getParent());
         Process p = new ProcessBuilder(xvfb.toString(), "-displayfd", "1", "-screen", "0", "1280x1024x24",
                 "-nolisten", "tcp")
@@ -95,7 +101,7 @@ final class TestDisplay implements AutoCloseable {
             // Reported below, with Xvfb's own messages.
         }
         stop(p);
-        return skip("DISPLAY is not set and " + xvfb + " did not start a display (waited up to " + START_SECONDS
+        return skip(without + " and " + xvfb + " did not start a display (waited up to " + START_SECONDS
                 + " s); it said: " + Files.readString(logFile, StandardCharsets.UTF_8).trim());
     }
 
