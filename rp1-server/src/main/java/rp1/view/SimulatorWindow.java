@@ -12,13 +12,12 @@ import javax.swing.WindowConstants;
 import rp1.rossum.RsPlan;
 import rp1.simulator.Simulation;
 import rp1.simulator.snapshot.SnapshotPublisher;
-import rp1.simulator.snapshot.WorldSnapshot;
 
 /**
  * The simulator's window (behavior.md section 10): the plan canvas, the status panel and the menus.
- * An animation timer polls the latest snapshot at the animation frame rate; the simulation never
- * waits for the window. Closing the window or File → Exit runs the exit callback on a thread of its
- * own (the server decides how to shut down). Create and use on the event thread.
+ * An animation timer polls the latest snapshot and the clock at the animation frame rate; the
+ * simulation never waits for the window. Closing the window or File → Exit runs the exit callback on
+ * a thread of its own (the server decides how to shut down). Create and use on the event thread.
  */
 final class SimulatorWindow {
     /** The title of a window whose plan has no caption. */
@@ -28,8 +27,8 @@ final class SimulatorWindow {
     private final PlanCanvas canvas;
     private final StatusPanel status;
     private final SnapshotPublisher publisher;
+    private final Animation animation;
     private final Timer timer;
-    private WorldSnapshot shown;
 
     /**
      * Builds and shows the window.
@@ -43,11 +42,11 @@ final class SimulatorWindow {
         // The frame first: if the toolkit fails, it fails here, before the simulation is observed.
         frame = new JFrame(title(plan));
         publisher = new SnapshotPublisher(simulation);
-        shown = publisher.poll();
         DisplayUnits units = DisplayUnits.of(plan.getUnits());
         status = new StatusPanel(units);
-        canvas = new PlanCanvas(new Renderer(plan), shown, simulation, status::showPointer);
-        status.showState(shown);
+        canvas = new PlanCanvas(new Renderer(plan), publisher.poll(), simulation, status::showPointer);
+        animation = new Animation(publisher, simulation::getSimTime, canvas, status);
+        animation.frame();
         Runnable exitOnItsThread = () -> new Thread(exit, "rp1-view-exit").start();
         frame.setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
@@ -61,7 +60,7 @@ final class SimulatorWindow {
         frame.getContentPane().add(canvas, BorderLayout.CENTER);
         frame.getContentPane().add(status, BorderLayout.SOUTH);
         frame.setSize(500, 400);
-        timer = new Timer((int) Math.max(1, Math.round(frameInterval * 1000.0)), e -> animate());
+        timer = new Timer((int) Math.max(1, Math.round(frameInterval * 1000.0)), e -> animation.frame());
         timer.start();
         frame.setVisible(true);
     }
@@ -70,15 +69,6 @@ final class SimulatorWindow {
     static String title(RsPlan plan) {
         String caption = plan.getCaption();
         return caption == null || caption.isEmpty() ? UNTITLED : caption;
-    }
-
-    private void animate() {
-        WorldSnapshot s = publisher.poll();
-        if (s != shown) {
-            shown = s;
-            canvas.show(s);
-            status.showState(s);
-        }
     }
 
     JFrame frame() {

@@ -26,6 +26,7 @@ final class StatusPanel extends JPanel {
     private final JTextField y = readOnlyField();
     private transient RsUnits units;
     private transient WorldSnapshot shown;
+    private double shownTime;
     private transient RsPoint pointer;
 
     StatusPanel(DisplayUnits initial) {
@@ -51,10 +52,11 @@ final class StatusPanel extends JPanel {
         refresh();
     }
 
-    /** Shows the time and poses of {@code s}. */
-    void showState(WorldSnapshot s) {
+    /** Shows the simulation time {@code simTime} and the robots' poses in {@code s}. */
+    void showState(WorldSnapshot s, double simTime) {
         shown = s;
-        state.setText(StatusText.describe(s, units));
+        shownTime = simTime;
+        state.setText(StatusText.describe(simTime, s.robots(), units));
     }
 
     /** Shows the floor point under the pointer; null clears the fields. */
@@ -66,7 +68,7 @@ final class StatusPanel extends JPanel {
 
     private void refresh() {
         if (shown != null) {
-            showState(shown);
+            showState(shown, shownTime);
         }
         showPointer(pointer);
     }

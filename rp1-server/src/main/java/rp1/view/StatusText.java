@@ -1,10 +1,10 @@
 package rp1.view;
 
+import java.util.List;
 import java.util.Locale;
 
 import rp1.rossum.RsUnits;
 import rp1.simulator.snapshot.RobotSnapshot;
-import rp1.simulator.snapshot.WorldSnapshot;
 
 /** The texts of the window's status line and coordinate read-out. */
 final class StatusText {
@@ -12,12 +12,13 @@ final class StatusText {
     }
 
     /**
-     * Simulation time and every robot's pose, e.g.
-     * {@code t = 12.500 s   ClientZero: x 1.234 m, y 2.000 m, heading 45.0 deg}.
+     * The simulation time and the pose of every robot, e.g.
+     * {@code t = 12.500 s   ClientZero: x 1.234 m, y 2.000 m, heading 45.0 deg}. The time is the
+     * clock's, not the snapshot's: it moves on while the robots stand still and no snapshot is taken.
      */
-    static String describe(WorldSnapshot s, RsUnits units) {
-        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "t = %.3f s", s.simTime()));
-        for (RobotSnapshot r : s.robots()) {
+    static String describe(double simTime, List<RobotSnapshot> robots, RsUnits units) {
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "t = %.3f s", simTime));
+        for (RobotSnapshot r : robots) {
             b.append("   ").append(r.label()).append(": ");
             if (r.placed()) {
                 double heading = Math.toDegrees(r.theta());
