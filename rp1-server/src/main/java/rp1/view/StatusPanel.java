@@ -2,6 +2,9 @@ package rp1.view;
 
 import java.awt.BorderLayout;
 import java.awt.FlowLayout;
+import java.awt.FontMetrics;
+import java.awt.Insets;
+import java.util.List;
 
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
@@ -57,6 +60,17 @@ final class StatusPanel extends JPanel {
         shown = s;
         shownTime = simTime;
         state.setText(StatusText.describe(simTime, s.robots(), units));
+    }
+
+    /** The width, in pixels, the status line needs to show the widest of {@code lines} in full. */
+    int widthFor(List<String> lines) {
+        FontMetrics metrics = state.getFontMetrics(state.getFont());
+        int widest = 0;
+        for (String line : lines) {
+            widest = Math.max(widest, metrics.stringWidth(line));
+        }
+        Insets around = state.getInsets();
+        return around.left + widest + around.right;
     }
 
     /** Shows the floor point under the pointer; null clears the fields. */
