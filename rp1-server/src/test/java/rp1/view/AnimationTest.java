@@ -39,12 +39,16 @@ class AnimationTest {
             animation = new Animation(publisher, s.simulation()::getSimTime, canvas, status);
         }
 
-        /** Runs frames until the canvas shows the placed robot. */
-        void awaitPlacedRobot() throws InterruptedException {
+        /** Connects ClientZero, places it at home and runs frames until the canvas shows it there. */
+        ScenarioClient placeClientZero(Scenario s) throws InterruptedException {
+            ScenarioClient c = s.connect(new ScenarioClient(ClientZero.build()));
+            c.sendPlacementRequest("home");
+            c.await(RsPlacementEvent.class);
             while (canvas.shown().placedRobots().isEmpty()) {
                 animation.frame();
                 Thread.sleep(10);
             }
+            return c;
         }
     }
 
@@ -59,10 +63,7 @@ class AnimationTest {
         try (Scenario s = Scenario.shippedPlan("WhiteRoom.txt");
              SnapshotPublisher publisher = new SnapshotPublisher(s.simulation())) {
             Parts window = new Parts(s, publisher);
-            ScenarioClient c = s.connect(new ScenarioClient(ClientZero.build()));
-            c.sendPlacementRequest("home");
-            c.await(RsPlacementEvent.class);
-            window.awaitPlacedRobot();
+            ScenarioClient c = window.placeClientZero(s);
             c.sendTimeoutRequest(2.0);
             c.await(RsTimeoutEvent.class);
             window.animation.frame();
@@ -76,10 +77,7 @@ class AnimationTest {
         try (Scenario s = Scenario.with(Worlds.whiteRoomText(), paced);
              SnapshotPublisher publisher = new SnapshotPublisher(s.simulation())) {
             Parts window = new Parts(s, publisher);
-            ScenarioClient c = s.connect(new ScenarioClient(ClientZero.build()));
-            c.sendPlacementRequest("home");
-            c.await(RsPlacementEvent.class);
-            window.awaitPlacedRobot();
+            window.placeClientZero(s);
             window.animation.frame();
             double before = shownTime(window.status);
             Thread.sleep(500);
