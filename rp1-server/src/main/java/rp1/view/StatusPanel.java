@@ -2,6 +2,9 @@ package rp1.view;
 
 import java.awt.BorderLayout;
 import java.awt.FlowLayout;
+import java.awt.FontMetrics;
+import java.awt.Insets;
+import java.util.List;
 
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
@@ -26,6 +29,7 @@ final class StatusPanel extends JPanel {
     private final JTextField y = readOnlyField();
     private transient RsUnits units;
     private transient WorldSnapshot shown;
+    private double shownTime;
     private transient RsPoint pointer;
 
     StatusPanel(DisplayUnits initial) {
@@ -51,10 +55,22 @@ final class StatusPanel extends JPanel {
         refresh();
     }
 
-    /** Shows the time and poses of {@code s}. */
-    void showState(WorldSnapshot s) {
+    /** Shows the simulation time {@code simTime} and the robots' poses in {@code s}. */
+    void showState(WorldSnapshot s, double simTime) {
         shown = s;
-        state.setText(StatusText.describe(s, units));
+        shownTime = simTime;
+        state.setText(StatusText.describe(simTime, s.robots(), units));
+    }
+
+    /** The width, in pixels, the status line needs to show the widest of {@code lines} in full. */
+    int widthFor(List<String> lines) {
+        FontMetrics metrics = state.getFontMetrics(state.getFont());
+        int widest = 0;
+        for (String line : lines) {
+            widest = Math.max(widest, metrics.stringWidth(line));
+        }
+        Insets around = state.getInsets();
+        return around.left + widest + around.right;
     }
 
     /** Shows the floor point under the pointer; null clears the fields. */
@@ -66,7 +82,7 @@ final class StatusPanel extends JPanel {
 
     private void refresh() {
         if (shown != null) {
-            showState(shown);
+            showState(shown, shownTime);
         }
         showPointer(pointer);
     }

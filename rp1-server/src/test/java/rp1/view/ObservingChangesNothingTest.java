@@ -3,25 +3,31 @@ package rp1.view;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
+
+import javax.swing.SwingUtilities;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 import rp1.rossum.RsBody;
+import rp1.rossum.RsPlan;
 import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.event.RsPlacementEvent;
 import rp1.rossum.request.RsMotionRequest;
+import rp1.simulator.Simulation;
 import rp1.simulator.scenario.Scenario;
 import rp1.simulator.scenario.ScenarioClient;
 import rp1.simulator.snapshot.SnapshotPublisher;
 
 /**
  * A slow window and picture files never change what the clients are told: the same lockstep
- * scenario gives the same events, to the last bit, whether or not it is being watched.
+ * scenario gives the same events, to the last bit, whether or not it is being watched (the window's
+ * animation reads snapshots and the clock).
  */
 @Timeout(120)
 class ObservingChangesNothingTest {
@@ -70,7 +76,7 @@ class ObservingChangesNothingTest {
         try (Scenario s = Scenario.shippedPlan("WhiteRoom.txt");
              SnapshotPublisher publisher = new SnapshotPublisher(s.simulation());
              SnapshotWriter writer = new SnapshotWriter(s.simulation(), dir.resolve("w.png"), 0.25, new Worlds.RecordingLog())) {
-            SlowWindow window = new SlowWindow(publisher);
+            SlowWindow window = new SlowWindow(s.simulation(), publisher);
             window.start();
             watched = drive(s);
             frames = window.finish();
@@ -82,27 +88,39 @@ class ObservingChangesNothingTest {
         assertEquals(alone, watched);
     }
 
-    /** Polls and draws like the window's timer, but takes 30 ms per frame. */
+    /**
+     * Runs the window's animation frames (snapshot and clock) on the event thread, as its timer does,
+     * and draws each, taking 30 ms per frame.
+     */
     private static final class SlowWindow extends Thread {
-        private final SnapshotPublisher publisher;
         private final Renderer renderer;
+        private final PlanCanvas canvas;
+        private final Animation animation;
         private final AtomicBoolean running = new AtomicBoolean(true);
         private int frames;
+        private volatile Throwable failure;
 
-        SlowWindow(SnapshotPublisher publisher) {
+        SlowWindow(Simulation simulation, SnapshotPublisher publisher) {
             super("slow-window");
-            this.publisher = publisher;
-            this.renderer = new Renderer(publisher.poll().plan());
+            RsPlan plan = simulation.getWorld().getPlan();
+            this.renderer = new Renderer(plan);
+            StatusPanel status = new StatusPanel(DisplayUnits.of(plan.getUnits()));
+            this.canvas = new PlanCanvas(renderer, publisher.poll(), simulation, p -> { });
+            this.animation = new Animation(publisher, simulation::getSimTime, canvas, status);
             setDaemon(true);
         }
 
         @Override
         public void run() {
             while (running.get()) {
-                Pictures.render(renderer, publisher.poll(), 400, 400);
-                frames++;
                 try {
+                    SwingUtilities.invokeAndWait(animation::frame);
+                    Pictures.render(renderer, canvas.shown(), 400, 400);
+                    frames++;
                     Thread.sleep(30);
+                } catch (InvocationTargetException e) {
+                    failure = e.getCause();
+                    return;
                 } catch (InterruptedException e) {
                     return;
                 }
@@ -112,6 +130,9 @@ class ObservingChangesNothingTest {
         int finish() throws InterruptedException {
             running.set(false);
             join(5000);
+            if (failure != null) {
+                throw new AssertionError("an animation frame failed", failure);
+            }
             return frames;
         }
     }

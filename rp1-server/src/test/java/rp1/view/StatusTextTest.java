@@ -12,23 +12,18 @@ import rp1.rossum.RsKilometers;
 import rp1.rossum.RsMeters;
 import rp1.rossum.RsPlan;
 import rp1.simulator.snapshot.RobotSnapshot;
-import rp1.simulator.snapshot.WorldSnapshot;
 
 /** The status line, the coordinate read-out and the units checked at first (behavior.md section 10). */
 class StatusTextTest {
 
-    private static WorldSnapshot at(double time, RobotSnapshot... robots) {
-        return new WorldSnapshot(new RsPlan(), time, List.of(), List.of(robots), List.of());
-    }
-
     @Test
     void theStatusLineShowsTheTimeAndEveryRobotsPoseInTheChosenUnits() {
-        WorldSnapshot s = at(12.5, new RobotSnapshot(1, "ClientZero", true, 1.234, 2.0, Math.toRadians(-90), List.of()),
+        List<RobotSnapshot> robots = List.of(new RobotSnapshot(1, "ClientZero", true, 1.234, 2.0, Math.toRadians(-90), List.of()),
                 new RobotSnapshot(2, "robot 2", false, 0, 0, 0, List.of()));
         assertEquals("t = 12.500 s   ClientZero: x 1.234 m, y 2.000 m, heading 270.0 deg   robot 2: not placed",
-                StatusText.describe(s, new RsMeters()));
+                StatusText.describe(12.5, robots, new RsMeters()));
         assertEquals("t = 12.500 s   ClientZero: x 4 ft  0-19/32 in, y 6 ft  6-24/32 in, heading 270.0 deg   robot 2: not placed",
-                StatusText.describe(s, new RsFeet()));
+                StatusText.describe(12.5, robots, new RsFeet()));
     }
 
     @Test

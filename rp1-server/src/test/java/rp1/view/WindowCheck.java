@@ -13,6 +13,8 @@ import java.nio.file.Paths;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import javax.imageio.ImageIO;
 import javax.swing.JMenu;
@@ -30,9 +32,10 @@ import rp1.simulator.scenario.ScenarioClient;
 
 /**
  * Run on a real display (Xvfb in CI): opens the simulator's window on the WhiteRoom with ClientZero
- * at home, takes a screenshot and checks it shows the world, clicks on the floor with the primary
- * and the secondary button, and checks that the subscribed client is told the floor points; then
- * File → Exit must run the server's exit callback.
+ * at home, takes a screenshot and checks it shows the world, checks that the status line's clock
+ * runs while nothing moves, clicks on the floor with the primary and the secondary button, and
+ * checks that the subscribed client is told the floor points; then File → Exit must run the
+ * server's exit callback.
  */
 public final class WindowCheck {
     private static final long WAIT_MILLIS = 10_000;
@@ -69,6 +72,7 @@ public final class WindowCheck {
             c.await(RsPlacementEvent.class);
             awaitRobotShown();
             screenshotShowsTheWorld(s.simulation().getWorld().getPlan().getPlacementArray()[0]);
+            statusClockRunsWhileNothingMoves();
             clickReachesTheClient(c, 1.0, 0.6, InputEvent.BUTTON1_DOWN_MASK, MouseButtons.PRIMARY);
             clickReachesTheClient(c, 2.0, 2.7, InputEvent.BUTTON3_DOWN_MASK, MouseButtons.SECONDARY);
             exitRunsTheCallback(exited);
@@ -101,6 +105,25 @@ public final class WindowCheck {
         if (!status.contains("ClientZero: x 2.500 m, y 2.500 m, heading 225.0 deg")) {
             throw new AssertionError("status line: " + status);
         }
+    }
+
+    private void statusClockRunsWhileNothingMoves() throws Exception {
+        double before = statusTime();
+        Thread.sleep(1000);
+        double after = statusTime();
+        if (after - before < 0.5) {
+            throw new AssertionError("a second at speed 1 moved the status line's clock from " + before + " to "
+                    + after + " s");
+        }
+    }
+
+    private double statusTime() throws Exception {
+        String status = onEventThread(() -> view.window().status().stateText());
+        Matcher m = Pattern.compile("^t = (\\d+\\.\\d+) s").matcher(status);
+        if (!m.find()) {
+            throw new AssertionError("no time in the status line: " + status);
+        }
+        return Double.parseDouble(m.group(1));
     }
 
     private void expectColour(BufferedImage shot, Rectangle frame, double x, double y, Color c, String what)

@@ -33,7 +33,12 @@ final class Worlds {
     }
 
     static RsPlan whiteRoom() throws IOException, RsParsingException {
-        return RsPlanParser.parseFile(floorPlan("WhiteRoom.txt"));
+        return plan("WhiteRoom.txt");
+    }
+
+    /** One of the plans in FloorPlans/, parsed. */
+    static RsPlan plan(String name) throws IOException, RsParsingException {
+        return RsPlanParser.parseFile(floorPlan(name));
     }
 
     /** A server configuration for the WhiteRoom with these extra keys (key, value, key, value, ...). */
