@@ -131,14 +131,14 @@ public final class Simulation {
             Runnable afterRestart = link == Link.READER ? this::pump : () -> { };
             connection.addInterlock(interlock.forClient(session, afterRestart));
         }
+        if (link == Link.READER) {
+            session.setAfterSubmit(this::pump);
+        }
         connection.setProtocolShutdownHandler(() -> {
             if (interlock != null) {
                 interlock.release(session);
             }
             session.connectionClosed();
-            if (link == Link.READER) {
-                pump();
-            }
         });
         return session;
     }

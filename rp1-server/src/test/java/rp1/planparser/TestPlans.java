@@ -46,7 +46,7 @@ final class TestPlans {
     /** Skips the calling test, with the reason, if {@code file} is absent (only original sample plans may be). */
     static void assumePresent(Path file) {
         assumeTrue(Files.isRegularFile(file), () -> "skipped: " + file + " is absent; the original RP1 0.60 sample"
-                + " plans are test inputs kept outside the repository, read only when ../shared is beside it");
+                + " plans are test inputs kept outside the repository, read only when ../shared/rp1-0.60-floorplans is beside it");
     }
 
     /** A plan we ship in FloorPlans/. */

@@ -94,6 +94,7 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     private TaskHandle startMotion = TaskHandle.NONE;
     private Heartbeats.Beat heartbeat;
     private Runnable onDeparture = () -> { };
+    private volatile Runnable afterSubmit = () -> { };
 
     /**
      * A session for the client numbered {@code number} (1, 2, ... in the order clients joined) on
@@ -156,6 +157,14 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         return departed;
     }
 
+    /**
+     * Run on the transport's thread after each request has been queued: a reader thread of its own
+     * runs the tasks then due itself.
+     */
+    public void setAfterSubmit(Runnable action) {
+        afterSubmit = action;
+    }
+
     /** Run once, on the thread running tasks, when the client's departure has been applied. */
     public void setDepartureListener(Runnable listener) {
         onDeparture = listener;
@@ -166,6 +175,7 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
 
     private void submit(Request r) {
         host.submit(this, r);
+        afterSubmit.run();
     }
 
     /** The connection ended: the client's departure is queued like its requests. Any thread. */

@@ -88,7 +88,7 @@ final class RawClient implements AutoCloseable {
         out.writeInt(code);
     }
 
-    /** A body "B" with one circle of radius 0.15 m (protocol.md section 13.3). */
+    /** A body "B" with one circle of radius 0.15 m (protocol.md section 8.7). */
     void sendBody() throws IOException {
         header(BODY);
         out.writeUTF("B");
