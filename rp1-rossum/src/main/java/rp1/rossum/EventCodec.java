@@ -117,6 +117,78 @@ final class EventCodec {
         }
     }
 
+    /**
+     * What a client would decode from {@code e} on the wire, built without encoding it: a new event
+     * with the same fields, strings that were null as "" (the wire cannot carry null), and for a plan
+     * event the plan as the wire delivers it (a decoded copy, without what the wire leaves out).
+     */
+    static RsEvent copy(RsEvent e) {
+        double t = e.simTime;
+        switch (e.eventID) {
+            case RsEvent.EVT_CONTACT_SENSOR: {
+                RsContactSensorEvent c = (RsContactSensorEvent) e;
+                return new RsContactSensorEvent(t, c.sensorID, c.status, text(c.getNameOfObjectDetected()));
+            }
+            case RsEvent.EVT_MOUSE_CLICK: {
+                RsMouseClickEvent m = (RsMouseClickEvent) e;
+                return new RsMouseClickEvent(t, m.button, m.clickCount, m.x, m.y);
+            }
+            case RsEvent.EVT_POSITION: {
+                RsPositionEvent p = (RsPositionEvent) e;
+                return new RsPositionEvent(t, p.x, p.y, p.orientation, p.velocity, p.turnRate);
+            }
+            case RsEvent.EVT_RANGE_SENSOR: {
+                RsRangeSensorEvent r = (RsRangeSensorEvent) e;
+                return new RsRangeSensorEvent(t, r.sensorID, r.x, r.y, r.ux, r.uy, r.status, r.range,
+                        text(r.getNameOfObjectDetected()));
+            }
+            case RsEvent.EVT_TARGET_SENSOR: {
+                RsTargetSensorEvent s = (RsTargetSensorEvent) e;
+                return new RsTargetSensorEvent(t, s.sensorID, s.x, s.y, s.ux, s.uy, s.status, s.xDetection,
+                        s.yDetection, s.range, s.bearing, text(s.getNameOfObjectDetected()));
+            }
+            case RsEvent.EVT_TIMEOUT:
+                return new RsTimeoutEvent(t, ((RsTimeoutEvent) e).timeoutIndex);
+            case RsEvent.EVT_MOTION_STARTED: {
+                RsMotionStartedEvent m = (RsMotionStartedEvent) e;
+                return new RsMotionStartedEvent(t, m.linearVelocity, m.rotationalVelocity, m.duration, m.x, m.y,
+                        m.orientation);
+            }
+            case RsEvent.EVT_MOTION_HALTED: {
+                RsMotionHaltedEvent h = (RsMotionHaltedEvent) e;
+                return new RsMotionHaltedEvent(t, h.causeOfHalt, h.x, h.y, h.orientation, h.duration);
+            }
+            case RsEvent.EVT_PLACEMENT: {
+                RsPlacementEvent p = (RsPlacementEvent) e;
+                return new RsPlacementEvent(t, p.valid, text(p.name), p.x, p.y, p.orientation);
+            }
+            case RsEvent.EVT_TARGET_SELECTION: {
+                RsTargetSelectionEvent s = (RsTargetSelectionEvent) e;
+                return new RsTargetSelectionEvent(t, text(s.targetName), s.status);
+            }
+            case RsEvent.EVT_PLAN:
+                return new RsPlanEvent(t, PlanCodec.copy((RsPlan) ((RsPlanEvent) e).plan));
+            case RsEvent.EVT_PAINT_SENSOR: {
+                RsPaintSensorEvent p = (RsPaintSensorEvent) e;
+                return new RsPaintSensorEvent(t, p.sensorID, p.x, p.y, p.status, p.region);
+            }
+            case RsEvent.EVT_HEARTBEAT:
+                return new RsHeartbeatEvent(t, ((RsHeartbeatEvent) e).sequence);
+            case RsEvent.EVT_ENCODER_STATUS: {
+                RsEncoderStatusEvent s = (RsEncoderStatusEvent) e;
+                return new RsEncoderStatusEvent(t, s.requestIndex, s.encoderID, s.accumulatorValue,
+                        s.absoluteAccumulatorValue, s.quadratureValue, s.encoderInterval, s.encoderAngle,
+                        s.clearOnReport);
+            }
+            default:
+                throw new IllegalArgumentException("unknown event code " + e.eventID + " in " + e);
+        }
+    }
+
+    private static String text(String s) {
+        return s == null ? "" : s;
+    }
+
     private static int indexOf(RsEvent e) {
         return e instanceof RsSensorEvent ? ((RsSensorEvent) e).sensorID : 0;
     }

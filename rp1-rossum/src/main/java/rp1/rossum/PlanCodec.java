@@ -44,6 +44,18 @@ final class PlanCodec {
         return plan;
     }
 
+    /**
+     * The plan as a client receives it: encoded and decoded again, so it lacks exactly what the wire
+     * leaves out (region codes, colours of walls, ...). Null stays null.
+     */
+    static RsPlan copy(RsPlan plan) {
+        try {
+            return decode(encode(plan));
+        } catch (IOException e) {
+            throw new IllegalStateException("a plan this library encoded cannot be decoded", e);
+        }
+    }
+
     /** Appends the encoding of {@code plan} (null: "no plan available") to {@code out}. */
     static void encode(WireOut out, RsPlan plan) {
         if (plan == null) {

@@ -1,5 +1,6 @@
 package rp1.rossum;
 
+import java.awt.Color;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -42,7 +43,16 @@ import rp1.rossum.event.RsTargetSensorEventHandler;
 import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.event.RsTimeoutEventHandler;
 import rp1.rossum.request.RsActuatorControlRequest;
+import rp1.rossum.request.RsEncoderStatusRequest;
+import rp1.rossum.request.RsHaltRequest;
+import rp1.rossum.request.RsHeartbeatRequest;
 import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.request.RsPainterChangeRequest;
+import rp1.rossum.request.RsPlacementRequest;
+import rp1.rossum.request.RsPlanRequest;
+import rp1.rossum.request.RsSensorRequest;
+import rp1.rossum.request.RsSubscriptionRequest;
+import rp1.rossum.request.RsTargetSelectionRequest;
 
 /**
  * A robot client's session with the simulator: the "brain" side of RP1. Extend it (or hold one),
@@ -59,7 +69,12 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /** The configuration {@link #initialize()} uses; created there if still null. */
     public RsProperties rsProperties;
 
+    /** Requests after a direct session has ended: dropped, as over a closed stream. */
+    private static final RequestSink DROPPED = DroppedRequests.INSTANCE;
+
     private final HandlerRegistry registry = new HandlerRegistry();
+    private final RequestSink wire = new WireRequests();
+    private volatile DirectLink link;
     /** Written by the event loop without taking this object's monitor, which senders may hold. */
     private volatile double simTime;
     private int timeoutIndex;
@@ -84,7 +99,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         if (!isLoggerSet()) {
             initiateLogger(rsProperties);
         }
-        if (!isInputSet()) {
+        if (!isInputSet() && link == null) {
             initiateConnection(rsProperties);
         }
     }
@@ -383,8 +398,8 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     private void sendSubscription(int code, int index, boolean enable) {
-        if (isOutputSet()) {
-            sendRequest(RequestCodec.subscription(code, index, enable));
+        if (isConnected()) {
+            requests().subscription(new RsSubscriptionRequest(code, index, enable));
         }
     }
 
@@ -398,21 +413,21 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      */
     public synchronized int sendTimeoutRequest(double duration) {
         int index = ++timeoutIndex;
-        sendRequest(RequestCodec.timeout(duration, index));
+        requests().timeout(duration, index);
         return index;
     }
 
     /** Asks for the sensor's current state as a sensor event, whatever the subscriptions. */
     public synchronized void sendSensorStatusRequest(RsBodySensor sensor) {
-        sendRequest(RequestCodec.sensorStatus(sensorId(sensor)));
+        requests().sensorStatus(new RsSensorRequest(sensorId(sensor)));
     }
 
     public synchronized void sendMotionRequest(RsMotionRequest r) {
-        sendRequest(RequestCodec.motion(Objects.requireNonNull(r, "motion request")));
+        requests().motion(Objects.requireNonNull(r, "motion request"));
     }
 
     public synchronized void sendPositionRequest() {
-        sendRequest(RequestCodec.position());
+        requests().position();
     }
 
     /**
@@ -420,44 +435,44 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      * "$random" for a random free pose.
      */
     public synchronized void sendPlacementRequest(String name) {
-        sendRequest(RequestCodec.placement(name));
+        requests().placement(new RsPlacementRequest(name == null || name.isEmpty() ? null : name));
     }
 
     public synchronized void sendHaltRequest() {
-        sendRequest(RequestCodec.halt());
+        requests().halt(new RsHaltRequest());
     }
 
     public synchronized void sendTargetSelectionRequest(String targetName, boolean status) {
-        sendRequest(RequestCodec.targetSelection(false, targetName, status, false));
+        sendTargetSelection(false, targetName, status, false);
     }
 
     public synchronized void sendExclusiveTargetSelectionRequest(String targetName) {
-        sendRequest(RequestCodec.targetSelection(false, targetName, true, true));
+        sendTargetSelection(false, targetName, true, true);
     }
 
     public synchronized void sendRandomTargetSelectionRequest(boolean status) {
-        sendRequest(RequestCodec.targetSelection(true, null, status, false));
+        sendTargetSelection(true, null, status, false);
     }
 
     public synchronized void sendExclusiveRandomTargetSelectionRequest() {
-        sendRequest(RequestCodec.targetSelection(true, null, true, true));
+        sendTargetSelection(true, null, true, true);
     }
 
     public synchronized void sendAllTargetsSelectionRequest(boolean status) {
-        sendRequest(RequestCodec.targetSelection(false, "*", status, false));
+        sendTargetSelection(false, "*", status, false);
     }
 
     public synchronized void sendPlanRequest() {
-        sendRequest(RequestCodec.plan());
+        requests().plan(new RsPlanRequest());
     }
 
     /** Asks for a heartbeat event every {@code period} seconds of simulation time (0 cancels). */
     public synchronized void sendHeartbeatRequest(double period) {
-        sendRequest(RequestCodec.heartbeat(period));
+        requests().heartbeat(new RsHeartbeatRequest(period));
     }
 
     public synchronized void sendHeartbeatCancellationRequest() {
-        sendRequest(RequestCodec.heartbeat(0.0));
+        requests().heartbeat(new RsHeartbeatRequest(0.0));
     }
 
     /**
@@ -472,17 +487,19 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
             return;
         }
         painter.setPainterActivationStatus(true);
-        sendRequest(RequestCodec.painterActivation(painter.getID(), painter.getTrailerX(), painter.getTrailerY(),
-                painter.getTrailerWidth(), painter.getPaintColors()));
+        Color[] colors = painter.getPaintColors();
+        requests().painterChange(new RsPainterChangeRequest(painter.getID(), false, true, true, painter.getTrailerX(),
+                painter.getTrailerY(), painter.getTrailerWidth(), colors.length == 0 ? null : colors.clone()));
     }
 
     public synchronized void sendPainterDeactivationRequest(RsBodyPainter painter) {
         Objects.requireNonNull(painter, "painter").setPainterActivationStatus(false);
-        sendRequest(RequestCodec.painterDeactivation(painter.getID()));
+        requests().painterChange(new RsPainterChangeRequest(painter.getID(), false, false, false, 0.0, 0.0, 0.0, null));
     }
 
     public synchronized void sendPainterErasureRequest(RsBodyPainter painter) {
-        sendRequest(RequestCodec.painterErasure(Objects.requireNonNull(painter, "painter").getID()));
+        requests().painterChange(new RsPainterChangeRequest(Objects.requireNonNull(painter, "painter").getID(), true, false,
+                false, 0.0, 0.0, 0.0, null));
     }
 
     /**
@@ -494,9 +511,9 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     public synchronized void sendActuatorControlRequest(RsActuatorControlRequest r) {
         Objects.requireNonNull(r, "actuator control request");
         if (r.getParameterNames().length > 0) {
-            sendRequest(RequestCodec.actuatorControl(r));
+            requests().actuatorControl(copyOf(r));
         } else if (r.commandID == RsActuatorControlRequest.HALT) {
-            sendRequest(RequestCodec.halt());
+            requests().halt(new RsHaltRequest());
         } else {
             log("RsClient: actuator command " + r.commandID + " without parameters not sent");
         }
@@ -523,7 +540,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
             ids[i] = encoders[i].getID();
         }
         int index = ++encoderRequestIndex;
-        sendRequest(RequestCodec.encoderStatus(index, ids, clearOnRequest));
+        requests().encoderStatus(new RsEncoderStatusRequest(index, ids, clearOnRequest));
         return index;
     }
 
@@ -533,13 +550,138 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      * @throws IllegalArgumentException if the body has no part that can be transmitted
      */
     public synchronized void sendBodySpecification(RsBody body) {
+        Objects.requireNonNull(body, "body");
+        DirectLink l = link;
+        if (l != null) {
+            if (!isClosed()) {
+                l.body(body);
+            }
+            return;
+        }
         WireOut payload = new WireOut();
-        BodyCodec.encode(payload, Objects.requireNonNull(body, "body"));
+        BodyCodec.encode(payload, body);
         sendMessage(BODY_SPECIFICATION, payload);
+    }
+
+    private void sendTargetSelection(boolean random, String name, boolean status, boolean exclusive) {
+        requests().targetSelection(new RsTargetSelectionRequest(random, name == null ? "" : name, status, exclusive));
+    }
+
+    private static RsActuatorControlRequest copyOf(RsActuatorControlRequest r) {
+        RsActuatorControlRequest copy = new RsActuatorControlRequest(r.actuatorID, r.commandID);
+        String[] names = r.getParameterNames();
+        double[] values = r.getParameterValues();
+        for (int i = 0; i < names.length; i++) {
+            copy.addParameter(names[i], values[i]);
+        }
+        return copy;
+    }
+
+    /**
+     * Where requests go: encoded onto the connection, or, for a client connected directly to a server
+     * in the same process, straight to the server's dispatch. The request objects are built as the
+     * server would decode them, so both ends see the same thing either way.
+     */
+    private RequestSink requests() {
+        DirectLink l = link;
+        if (l == null) {
+            return wire;
+        }
+        return isClosed() ? DROPPED : l.requests();
+    }
+
+    /** Whether requests can be sent: the streams are set, or a direct link is. */
+    private boolean isConnected() {
+        return link != null || isOutputSet();
+    }
+
+    /** A direct link to a server in the same process ({@link RsConnection#connectDirect}). */
+    void attach(DirectLink l) {
+        link = l;
+        setClosingAction(l::close);
+    }
+
+    /** An event from a direct link: dispatched on the calling thread, as {@link #run()} would dispatch it. */
+    void receiveDirect(RsEvent e) {
+        simTime = e.simTime;
+        dispatch(e);
     }
 
     private void sendRequest(WireOut payload) {
         sendMessage(REQUEST, payload);
+    }
+
+    /** Requests encoded onto the connection's stream. */
+    private final class WireRequests implements RequestSink {
+        @Override
+        public void timeout(double duration, int timeoutIndex) {
+            sendRequest(RequestCodec.timeout(duration, timeoutIndex));
+        }
+
+        @Override
+        public void subscription(RsSubscriptionRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void sensorStatus(RsSensorRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void motion(RsMotionRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void halt(RsHaltRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void position() {
+            sendRequest(RequestCodec.position());
+        }
+
+        @Override
+        public void setPosition() {
+            throw new IllegalStateException("the client library never sends SetPosition");
+        }
+
+        @Override
+        public void placement(RsPlacementRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void targetSelection(RsTargetSelectionRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void plan(RsPlanRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void heartbeat(RsHeartbeatRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void painterChange(RsPainterChangeRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void actuatorControl(RsActuatorControlRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
+
+        @Override
+        public void encoderStatus(RsEncoderStatusRequest r) {
+            sendRequest(RequestCodec.encode(r));
+        }
     }
 
     /**
@@ -570,6 +712,10 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      */
     @Override
     public void run() {
+        if (link != null) {
+            awaitClosed();
+            return;
+        }
         while (true) {
             EventCodec.Decoded d;
             try {

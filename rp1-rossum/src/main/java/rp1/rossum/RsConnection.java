@@ -1,9 +1,12 @@
 package rp1.rossum;
 
+import java.io.ByteArrayInputStream;
+import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.util.HashSet;
 import java.util.Set;
+import java.util.function.Consumer;
 
 import rp1.rossum.event.RsContactSensorEvent;
 import rp1.rossum.event.RsEncoderStatusEvent;
@@ -63,6 +66,11 @@ public class RsConnection extends RsProtocol implements Runnable {
     private final Set<Long> subscriptions = new HashSet<>();
     /** Keeps interlock numbers in increasing order on this connection's stream. */
     private final Object eventLock = new Object();
+    private final RequestSink dispatcher = new Dispatcher();
+    /** Bytes handed to {@link #receive} that do not yet make a whole message. */
+    private final FeedBuffer feed = new FeedBuffer();
+    private volatile boolean introduced;
+    private volatile DirectLink direct;
     private RsInterlock interlock;
     private volatile int maxInterlockSent;
 
@@ -99,7 +107,11 @@ public class RsConnection extends RsProtocol implements Runnable {
      * (the server assigns none), and answers ACCEPT echoing them.
      */
     public void exchangeIntroductions() throws IOException {
-        WireIn in = wire();
+        readConnect(wire());
+    }
+
+    /** Reads CONNECT from {@code in}, adopts its id and key, and answers ACCEPT. */
+    private void readConnect(WireIn in) throws IOException {
         int version = in.firstI32("CONNECT version");
         if (version != VERSION) {
             throw new RsProtocolException("CONNECT version", "expected " + VERSION + ", got " + version);
@@ -114,6 +126,7 @@ public class RsConnection extends RsProtocol implements Runnable {
         clientID = id;
         clientKey = key;
         send(ACCEPT, null);
+        introduced = true;
     }
 
     /**
@@ -122,10 +135,9 @@ public class RsConnection extends RsProtocol implements Runnable {
      */
     @Override
     public void run() {
-        RequestSink sink = new Dispatcher();
         try {
             while (true) {
-                readTransaction(sink);
+                readTransaction(wire());
             }
         } catch (EOFException e) {
             log("RsConnection: client " + clientID + " closed the connection");
@@ -135,23 +147,17 @@ public class RsConnection extends RsProtocol implements Runnable {
         shutdown();
     }
 
-    private void readTransaction(RequestSink sink) throws IOException {
-        int code = readHeader();
+    private void readTransaction(WireIn in) throws IOException {
+        int code = readHeader(in);
         switch (code) {
             case REQUEST:
-                RequestCodec.decode(wire(), sink);
+                RequestCodec.decode(in, dispatcher);
                 break;
-            case BODY_SPECIFICATION: {
-                RsBody body = BodyCodec.decode(wire());
-                verbose("Received body specification with name " + body.getName());
-                RsConnectionBodyHandler h = bodyHandler;
-                if (h != null) {
-                    h.process(body);
-                }
+            case BODY_SPECIFICATION:
+                bodyReceived(BodyCodec.decode(in));
                 break;
-            }
             case INTERLOCK: {
-                int value = wire().i32("interlock value");
+                int value = in.i32("interlock value");
                 RsInterlock il = interlock;
                 if (il != null) {
                     il.closeInterlock(value);
@@ -162,6 +168,96 @@ public class RsConnection extends RsProtocol implements Runnable {
                 throw new RsProtocolException("header transaction code",
                         "a server does not accept " + describeTransaction(code) + " after the handshake");
         }
+    }
+
+    private void bodyReceived(RsBody body) {
+        verbose("Received body specification with name " + body.getName());
+        RsConnectionBodyHandler h = bodyHandler;
+        if (h != null) {
+            h.process(body);
+        }
+    }
+
+    /**
+     * Beyond RP1 0.60, for servers that read with non-blocking I/O: hands over bytes read from the
+     * client. Every complete message among the bytes received so far is decoded and dispatched as
+     * {@link #run()} would dispatch it (the CONNECT/ACCEPT handshake first, unless
+     * {@link #exchangeIntroductions()} already did it); an incomplete one waits for the next call.
+     *
+     * @throws IOException if the bytes break the protocol (the message names the field), or a message
+     *                     grows beyond any the protocol allows; the session should then be shut down
+     */
+    public void receive(byte[] bytes, int offset, int length) throws IOException {
+        feed.append(bytes, offset, length);
+        int start = 0;
+        try {
+            while (start < feed.length) {
+                ByteArrayInputStream window = new ByteArrayInputStream(feed.bytes, start, feed.length - start);
+                WireIn in = new WireIn(new DataInputStream(window));
+                try {
+                    if (introduced) {
+                        readTransaction(in);
+                    } else {
+                        readConnect(in);
+                    }
+                } catch (TruncatedMessageException e) {
+                    if (feed.length - start > WireLimits.MAX_MESSAGE_BYTES) {
+                        throw new RsProtocolException(e.getField(), "message longer than "
+                                + WireLimits.MAX_MESSAGE_BYTES + " bytes");
+                    }
+                    break;
+                }
+                start = feed.length - window.available();
+            }
+        } finally {
+            feed.consume(start);
+        }
+    }
+
+    /**
+     * Beyond RP1 0.60: the non-blocking transport found the end of the client's input. Ends the
+     * session (calling the shutdown handler), logging whether the client left between messages or in
+     * the middle of one.
+     */
+    public void endOfInput() {
+        if (feed.length > 0) {
+            log("RsConnection terminating due to exception on input: the client closed the connection in the middle"
+                    + " of a message (" + feed.length + " bytes unread)");
+        } else {
+            log("RsConnection: client " + clientID + " closed the connection");
+        }
+        shutdown();
+    }
+
+    /** Whether the CONNECT/ACCEPT handshake has been done. */
+    public boolean hasIntroduced() {
+        return introduced;
+    }
+
+    /**
+     * Beyond RP1 0.60: connects {@code client}, in the same process, to this connection without
+     * streams. The client's requests come to this connection's handlers as objects (equal to what
+     * decoding them from the wire would give), on the thread that sends them; its body arrives as a
+     * decoded copy, as from the wire; and each event sent here is handed to the client's handlers at
+     * once, on the sending thread, as a copy of what the client would decode. There is no handshake and
+     * no interlock: the handlers returning is the acknowledgement. If a handler throws an
+     * {@code Error}, the session ends and {@code onFailure} is told. Closing either side closes both.
+     */
+    public void connectDirect(RsClient client, Consumer<Throwable> onFailure) {
+        DirectLink link = new DirectLink(this, client, onFailure);
+        direct = link;
+        client.attach(link);
+        setClosingAction(link::close);
+    }
+
+    /** What the client's requests are handed to: the same dispatch as for decoded requests. */
+    RequestSink dispatcher() {
+        return dispatcher;
+    }
+
+    /** A body from a directly connected client (already a decoded copy). */
+    void directBody(RsBody body) {
+        bodyReceived(body);
     }
 
     /** Writes an event header and the event prefix (code, index, time, interlock), unflushed. */
@@ -200,6 +296,13 @@ public class RsConnection extends RsProtocol implements Runnable {
      * after that, sends do nothing.
      */
     public void sendEvent(RsEvent event) {
+        DirectLink link = direct;
+        if (link != null) {
+            if (!isClosed()) {
+                link.deliver(event);
+            }
+            return;
+        }
         if (isClosed() || !isOutputSet()) {
             return;
         }

@@ -88,6 +88,8 @@ public class RsProtocol implements RsLogInterface {
     private boolean loggerSet;
     private boolean closed;
     private RsProtocolShutdownHandler shutdownHandler;
+    /** Run by {@link #shutdown()} before the handler: closes the other end of a direct link. */
+    private volatile Runnable closingAction = () -> { };
     private WireIn wireIn;
     /** The streams as given, closed directly on shutdown: closing the buffered wrappers would flush. */
     private InputStream rawInput;
@@ -187,7 +189,11 @@ public class RsProtocol implements RsLogInterface {
      * @throws RsProtocolException if the header is invalid or the stream ends inside it
      */
     protected int readHeader() throws IOException {
-        WireIn in = wire();
+        return readHeader(wire());
+    }
+
+    /** {@link #readHeader()} from {@code in}. */
+    int readHeader(WireIn in) throws IOException {
         int version = in.firstI32("header version");
         if (version != VERSION) {
             throw new RsProtocolException("header version", "expected " + VERSION + ", got " + version);
@@ -320,6 +326,25 @@ public class RsProtocol implements RsLogInterface {
         }
     }
 
+    /** Sets what {@link #shutdown()} does besides closing the streams (a direct link closes its other end). */
+    void setClosingAction(Runnable action) {
+        closingAction = action;
+    }
+
+    /** Waits until this session has been shut down. */
+    void awaitClosed() {
+        synchronized (stateLock) {
+            while (!closed) {
+                try {
+                    stateLock.wait();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
+            }
+        }
+    }
+
     /** Whether this session has been shut down. */
     boolean isClosed() {
         synchronized (stateLock) {
@@ -340,6 +365,7 @@ public class RsProtocol implements RsLogInterface {
                 return;
             }
             closed = true;
+            stateLock.notifyAll();
             in = rawInput;
             out = rawOutput;
             s = socket;
@@ -353,6 +379,7 @@ public class RsProtocol implements RsLogInterface {
         closeQuietly(s);
         closeQuietly(in);
         closeQuietly(out);
+        closingAction.run();
         RsProtocolShutdownHandler handler = shutdownHandler;
         if (handler != null) {
             handler.process();

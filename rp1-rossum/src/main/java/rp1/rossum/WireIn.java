@@ -120,6 +120,6 @@ final class WireIn {
     }
 
     private static RsProtocolException ended(String field) {
-        return new RsProtocolException(field, "stream ended in the middle of a message");
+        return new TruncatedMessageException(field);
     }
 }

@@ -23,6 +23,12 @@ final class WireLimits {
     static final int MAX_ACTUATOR_PARAMETERS = 1024;
     /** Encoder ids in one encoder-status request. */
     static final int MAX_ENCODERS = 4096;
+    /**
+     * The longest message a non-blocking reader keeps waiting for the rest of (a body of thousands of
+     * parts is far shorter); each arrival re-reads the incomplete message, so the bound also bounds
+     * that work.
+     */
+    static final int MAX_MESSAGE_BYTES = 4 << 20;
 
     private WireLimits() {
     }

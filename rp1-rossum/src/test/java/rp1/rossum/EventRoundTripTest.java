@@ -25,7 +25,7 @@ import rp1.rossum.event.RsTimeoutEvent;
 class EventRoundTripTest {
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void everyNonSensorEventArrivesIntact(String transport) throws Exception {
         try (Link link = RequestRoundTripTest.link(transport)) {
             ClientRecorder client = new ClientRecorder(link.client);

@@ -9,8 +9,8 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * A client and a server connection talking to each other, either in-process over {@link RsPipe}s
- * (no handshake, as a dynamically loaded client) or over a loopback socket on an ephemeral port
- * (with the CONNECT/ACCEPT handshake). The connection's reader runs on its own thread; the client's
+ * (no handshake, as a dynamically loaded client), in-process without streams (a direct link), or over a
+ * loopback socket on an ephemeral port (with the CONNECT/ACCEPT handshake). The connection's reader runs on its own thread; the client's
  * event loop is started with {@link #startClientLoop()}.
  */
 final class Link implements AutoCloseable {
@@ -20,6 +20,7 @@ final class Link implements AutoCloseable {
     final Capture<Boolean> connectionShutdown = new Capture<>();
     private Thread serverThread;
     private Thread clientThread;
+    private boolean direct;
 
     private Link(RsClient client, RsConnection connection) {
         this.client = client;
@@ -35,6 +36,16 @@ final class Link implements AutoCloseable {
         RsPipe toClient = new RsPipe();
         connection.setInputOutputStreams(toServer.getInputStream(), toClient.getOutputStream());
         client.setInputOutputStreams(toClient.getInputStream(), toServer.getOutputStream());
+        return link;
+    }
+
+    /** In-process without streams: the client's handlers run on the thread that sends each event. */
+    static Link direct(RsClient client, RsConnection connection) {
+        Link link = new Link(client, connection);
+        connection.connectDirect(client, t -> {
+            throw new AssertionError("a client handler failed", t);
+        });
+        link.direct = true;
         return link;
     }
 
@@ -60,8 +71,11 @@ final class Link implements AutoCloseable {
         return link;
     }
 
-    /** Starts the server connection's reader thread. */
+    /** Starts the server connection's reader thread (a direct link has none: requests arrive as they are sent). */
     Link startServer() {
+        if (direct) {
+            return this;
+        }
         serverThread = new Thread(connection, "test-connection");
         serverThread.setDaemon(true);
         serverThread.start();

@@ -31,12 +31,18 @@ class RequestRoundTripTest {
         RsClient client = new RsClient();
         client.setLogger(null);
         RsConnection connection = new RsConnection();
-        Link link = transport.equals("socket") ? Link.socket(client, connection) : Link.piped(client, connection);
-        return link;
+        switch (transport) {
+            case "socket":
+                return Link.socket(client, connection);
+            case "direct":
+                return Link.direct(client, connection);
+            default:
+                return Link.piped(client, connection);
+        }
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void timeoutsAreNumberedFromOneAndNegativeDurationsArriveUnclamped(String transport) throws Exception {
         try (Link link = link(transport)) {
             ServerRecorder server = new ServerRecorder(link.connection);
@@ -53,7 +59,7 @@ class RequestRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void motionHaltPositionPlanAndHeartbeatRequestsArrive(String transport) throws Exception {
         try (Link link = link(transport)) {
             ServerRecorder server = new ServerRecorder(link.connection);
@@ -79,7 +85,7 @@ class RequestRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void placementNamesSurviveIncludingNoneAndRandom(String transport) throws Exception {
         try (Link link = link(transport)) {
             ServerRecorder server = new ServerRecorder(link.connection);
@@ -98,7 +104,7 @@ class RequestRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void theFiveTargetSelectionVariantsCarryTheirFlags(String transport) throws Exception {
         try (Link link = link(transport)) {
             ServerRecorder server = new ServerRecorder(link.connection);
@@ -126,7 +132,7 @@ class RequestRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void actuatorParametersArriveInOrderAndAParameterlessHaltBecomesAHaltRequest(String transport) throws Exception {
         try (Link link = link(transport)) {
             ServerRecorder server = new ServerRecorder(link.connection);
@@ -150,7 +156,7 @@ class RequestRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void encoderRequestsAreNumberedSeparatelyFromTimeouts(String transport) throws Exception {
         try (Link link = link(transport)) {
             ServerRecorder server = new ServerRecorder(link.connection);

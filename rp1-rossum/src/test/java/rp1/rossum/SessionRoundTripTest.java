@@ -71,7 +71,7 @@ class SessionRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void theBodyArrivesWithEveryPartTypeAndTheClientsIds(String transport) throws Exception {
         Robot robot = new Robot();
         try (Link link = RequestRoundTripTest.link(transport)) {
@@ -97,7 +97,7 @@ class SessionRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void addingASensorHandlerSubscribesToThatSensorsEvents(String transport) throws Exception {
         Robot robot = new Robot();
         try (Link link = RequestRoundTripTest.link(transport)) {
@@ -175,7 +175,7 @@ class SessionRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void anAckermanCarWithACasterArrivesWithItsDerivedSteeringLimit(String transport) throws Exception {
         RsBody car = new RsBody("car");
         RsAckermanSteering steering = new RsAckermanSteering(0.3, 0.4, 0.06, Math.toRadians(40), false);
@@ -199,7 +199,7 @@ class SessionRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void sensorPollingAndPainterRequestsArrive(String transport) throws Exception {
         Robot robot = new Robot();
         try (Link link = RequestRoundTripTest.link(transport)) {
@@ -246,7 +246,7 @@ class SessionRoundTripTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"piped", "socket"})
+    @ValueSource(strings = {"piped", "socket", "direct"})
     void aPlanWithEveryObjectTypeArrives(String transport) throws Exception {
         RsPlan plan = new RsPlan();
         plan.setCaption("Every object");
