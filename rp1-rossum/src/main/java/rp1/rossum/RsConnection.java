@@ -221,12 +221,26 @@ public class RsConnection extends RsProtocol implements Runnable {
      */
     public void endOfInput() {
         if (feed.length > 0) {
-            log("RsConnection terminating due to exception on input: the client closed the connection in the middle"
-                    + " of a message (" + feed.length + " bytes unread)");
+            log("RsConnection terminating due to exception on input: " + truncation());
         } else {
             log("RsConnection: client " + clientID + " closed the connection");
         }
         shutdown();
+    }
+
+    /** What is wrong with the incomplete message left in the feed, naming the field it ended in. */
+    private String truncation() {
+        WireIn in = new WireIn(new DataInputStream(new ByteArrayInputStream(feed.bytes, 0, feed.length)));
+        try {
+            if (introduced) {
+                readTransaction(in);
+            } else {
+                readConnect(in);
+            }
+            return "the connection ended after an incomplete message";
+        } catch (IOException e) {
+            return e.getMessage();
+        }
     }
 
     /** Whether the CONNECT/ACCEPT handshake has been done. */

@@ -95,6 +95,20 @@ final class PropertyReader {
         }
     }
 
+    /** One of {@code choices} (exactly as written), or {@code fallback} if the key is absent. */
+    String choice(String key, String fallback, String... choices) throws ConfigException {
+        String v = string(key);
+        if (v == null) {
+            return fallback;
+        }
+        for (String c : choices) {
+            if (c.equals(v)) {
+                return v;
+            }
+        }
+        throw error(key, v, "one of " + String.join(", ", choices) + " expected");
+    }
+
     ConfigException error(String key, String value, String problem) {
         return new ConfigException(source + ": " + key + "=" + value + ": " + problem);
     }

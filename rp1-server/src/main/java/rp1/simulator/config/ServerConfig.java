@@ -12,7 +12,8 @@ import java.util.Properties;
  * the user's guide's spellings {@code enableInterlock} and {@code dlcSetLogger} accepted as aliases)
  * plus the keys this implementation adds: {@code bindAddress}, {@code simulationSpeed=max},
  * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
- * {@code clientQueueLimit}, {@code snapshotFileName} and {@code snapshotInterval}. Immutable; built
+ * {@code clientQueueLimit}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
+ * {@code waitForClients} and {@code dlcDelivery} (docs/properties.md). Immutable; built
  * by {@link #from}, which validates every value.
  */
 public final class ServerConfig {
@@ -58,6 +59,12 @@ public final class ServerConfig {
     public final String snapshotFileName;
     /** Simulated seconds between pictures (0: only at exit). */
     public final double snapshotInterval;
+    /** Whether robots collide with, sense and block the placement of one another (RP1 0.60: no). */
+    public final boolean robotsInteract;
+    /** Robots to be placed before simulated time may run (default 1 with only network clients, else 0). */
+    public final int waitForClients;
+    /** How loaded clients get their events: "auto", "direct" or "pipes". */
+    public final String dlcDelivery;
 
     private ServerConfig(PropertyReader r, String planOverride) throws ConfigException {
         port = r.integer("port", DEFAULT_PORT, 1025, 32767);
@@ -88,6 +95,9 @@ public final class ServerConfig {
         clientQueueLimit = r.integer("clientQueueLimit", 10000, 16, Integer.MAX_VALUE);
         snapshotFileName = r.string("snapshotFileName");
         snapshotInterval = r.real("snapshotInterval", 0.0, 0.0, Double.POSITIVE_INFINITY);
+        robotsInteract = r.bool(true, "robotsInteract");
+        waitForClients = r.integer("waitForClients", enableNetworkClients && !dlcEnabled ? 1 : 0, 0, Integer.MAX_VALUE);
+        dlcDelivery = r.choice("dlcDelivery", "auto", "auto", "direct", "pipes");
         checkConsistency(r);
     }
 

@@ -118,11 +118,17 @@ public final class ServerLauncher {
         }
         long seed = config.randomSeed.orElse(System.nanoTime());
         log.log("randomSeed=" + seed + (config.randomSeed.isPresent() ? "" : "; set it to repeat this run"));
-        SimulationSettings settings = config.lockstep
+        SimulationSettings settings = (config.lockstep
                 ? SimulationSettings.lockstep(config.modelingInterval, seed)
-                : SimulationSettings.paced(config.modelingInterval, config.simulationSpeed, config.interlockEnabled, seed);
+                : SimulationSettings.paced(config.modelingInterval, config.simulationSpeed, config.interlockEnabled, seed))
+                .withRobotsInteract(config.robotsInteract);
         Simulation simulation = new Simulation(plan, settings, log);
         log.setSimTime(simulation.getScheduler()::recordedTime);
+        if (config.waitForClients > 0) {
+            log.log("Simulated time waits until " + config.waitForClients + " robot" + (config.waitForClients == 1 ? " is" : "s are")
+                    + " placed (waitForClients)");
+            simulation.waitForRobots(config.waitForClients);
+        }
         return simulation;
     }
 

@@ -1,5 +1,7 @@
 package rp1.simulator.net;
 
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 import rp1.rossum.RsConnection;
@@ -12,6 +14,7 @@ import rp1.rossum.RsConnection;
 public final class ClientConnection extends RsConnection {
     private final String description;
     private final AtomicBoolean ended = new AtomicBoolean();
+    private final CountDownLatch told = new CountDownLatch(1);
     private volatile Runnable endListener = () -> { };
     /** Set when the server closed the session; the reader's own complaint about it is then noise. */
     private volatile boolean closedByServer;
@@ -57,6 +60,15 @@ public final class ClientConnection extends RsConnection {
         shutdown();
     }
 
+    /**
+     * The client broke the protocol: logged as a reader of a stream logs it, and the session ends (the
+     * robot leaves, the interlock it held is released).
+     */
+    public void protocolError(String reason) {
+        log("RsConnection terminating due to exception on input: " + reason);
+        shutdown();
+    }
+
     /** Whether the session has ended. */
     public boolean hasEnded() {
         return ended.get();
@@ -66,7 +78,19 @@ public final class ClientConnection extends RsConnection {
     protected void shutdown() {
         super.shutdown();
         if (ended.compareAndSet(false, true)) {
-            endListener.run();
+            try {
+                endListener.run();
+            } finally {
+                told.countDown();
+            }
         }
+    }
+
+    /**
+     * Waits (at most {@code millis}) until the end listener has run, on whichever thread ended the
+     * session: the server waits for this before closing its log.
+     */
+    public boolean awaitEnded(long millis) throws InterruptedException {
+        return told.await(millis, TimeUnit.MILLISECONDS);
     }
 }

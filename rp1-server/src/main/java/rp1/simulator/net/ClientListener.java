@@ -3,40 +3,62 @@ package rp1.simulator.net;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.SocketTimeoutException;
 import java.net.StandardSocketOptions;
+import java.nio.ByteBuffer;
+import java.nio.channels.ClosedChannelException;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Iterator;
+import java.util.List;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
 
 /**
- * Accepts network clients (behavior.md section 3.3, protocol.md section 4): a listener thread accepts
- * connections; each gets a thread of its own that performs the CONNECT/ACCEPT handshake under a time
- * limit, attaches the client to the simulation and then reads its requests. A client that connects
- * and stays silent, or breaks the handshake, is dropped with a log line and holds up nobody (RP1 0.60
- * did the handshake on its one accepting thread, so a silent peer blocked every later client).
+ * The network clients (docs/behavior.md section 3.3, docs/protocol.md section 4): one thread, the
+ * "network" thread, accepts connections and reads every client's messages through one selector. Each
+ * client's bytes go to its connection ({@code RsConnection.receive}), which does the CONNECT/ACCEPT
+ * handshake and hands every complete request to the client's session as an input of the simulation;
+ * after each round of reading the network thread runs the tasks then due itself
+ * ({@link Simulation#pump()}), saving a thread hand-off per interlocked exchange.
+ *
+ * <p>A connection that does not complete its handshake within the time limit is closed with a log
+ * line and holds up nobody (RP1 0.60 did the handshake on its one accepting thread, so a silent peer
+ * blocked every later client). Within a round, the clients whose input has ended are dealt with
+ * before anyone else's bytes: a robot whose client has gone leaves the world before any request that
+ * reached the server after it (the simulation applies departures first at every boundary).
  *
  * <p>Sockets are non-blocking channels with Nagle's algorithm off: events go out at once from the
  * thread that sends them while the client keeps up, and through its {@link OutboundQueue} when not.
  */
 public final class ClientListener {
+    private static final int READ_BUFFER_BYTES = 64 * 1024;
+    /** Bytes read from one client per round before the others get their turn. */
+    private static final int MAX_BYTES_PER_ROUND = 256 * 1024;
+
     private final ServerSocketChannel serverSocket;
+    private final Selector selector;
     private final Simulation simulation;
     private final ClientRegistry clients;
     private final RsLogInterface log;
-    private final int connectTimeoutMillis;
+    private final long connectTimeoutNanos;
     private final int queueLimit;
+    private final ByteBuffer readBuffer = ByteBuffer.allocate(READ_BUFFER_BYTES);
+    private final List<Peer> introducing = new ArrayList<>();
     private volatile boolean closed;
 
-    private ClientListener(ServerSocketChannel serverSocket, Simulation simulation, ClientRegistry clients,
-                           RsLogInterface log, int connectTimeoutMillis, int queueLimit) {
+    private ClientListener(ServerSocketChannel serverSocket, Selector selector, Simulation simulation,
+                           ClientRegistry clients, RsLogInterface log, long connectTimeoutNanos, int queueLimit) {
         this.serverSocket = serverSocket;
+        this.selector = selector;
         this.simulation = simulation;
         this.clients = clients;
         this.log = log;
-        this.connectTimeoutMillis = connectTimeoutMillis;
+        this.connectTimeoutNanos = connectTimeoutNanos;
         this.queueLimit = queueLimit;
     }
 
@@ -64,14 +86,21 @@ public final class ClientListener {
     public static ClientListener bind(String bindAddress, int port, Simulation simulation, ClientRegistry clients,
                                       RsLogInterface log, Settings settings) throws IOException {
         ServerSocketChannel s = ServerSocketChannel.open();
+        Selector selector = null;
         try {
             s.bind(new InetSocketAddress(InetAddress.getByName(bindAddress), port));
+            s.configureBlocking(false);
+            selector = Selector.open();
+            s.register(selector, SelectionKey.OP_ACCEPT);
         } catch (IOException e) {
             s.close();
+            if (selector != null) {
+                selector.close();
+            }
             throw e;
         }
-        int timeout = (int) Math.max(1L, Math.min(Integer.MAX_VALUE, Math.round(settings.connectTimeout * 1000.0)));
-        return new ClientListener(s, simulation, clients, log, timeout, settings.queueLimit);
+        long timeout = Math.max(1L, Math.round(settings.connectTimeout * 1.0e9));
+        return new ClientListener(s, selector, simulation, clients, log, timeout, settings.queueLimit);
     }
 
     /** The port clients connect to. */
@@ -79,37 +108,118 @@ public final class ClientListener {
         return serverSocket.socket().getLocalPort();
     }
 
-    /** Starts the listener thread. */
+    /** Starts the network thread. */
     public void start() {
-        Thread t = new Thread(this::acceptLoop, "listener");
+        Thread t = new Thread(this::serve, "network");
         t.setDaemon(true);
         t.start();
     }
 
-    private void acceptLoop() {
-        log.log("Now accepting connections on " + serverSocket.socket().getLocalSocketAddress());
-        while (!closed) {
-            SocketChannel channel;
-            String address;
-            try {
-                channel = serverSocket.accept();
-                address = String.valueOf(channel.getRemoteAddress());
-            } catch (IOException e) {
-                if (!closed) {
-                    log.logIt("X", "The listener failed, no more network clients: " + e.getMessage());
-                }
-                return;
-            }
-            int n = clients.nextNumber();
-            String description = "client " + n + " (" + address + ")";
-            Thread t = new Thread(() -> serve(channel, description), "client " + n);
-            t.setDaemon(true);
-            t.start();
+    /** One client as the network thread sees it. */
+    private static final class Peer {
+        final SocketChannel channel;
+        final ClientConnection connection;
+        final long deadline;
+        byte[] unread = new byte[0];
+        boolean ended;
+
+        Peer(SocketChannel channel, ClientConnection connection, long deadline) {
+            this.channel = channel;
+            this.connection = connection;
+            this.deadline = deadline;
         }
     }
 
-    /** The thread of one network client: handshake, then its requests until it leaves. */
-    private void serve(SocketChannel channel, String description) {
+    private void serve() {
+        log.log("Now accepting connections on " + serverSocket.socket().getLocalSocketAddress());
+        try {
+            while (!closed) {
+                selector.select(selectTimeoutMillis());
+                round();
+            }
+        } catch (IOException | RuntimeException e) {
+            if (!closed) {
+                log.logIt("X", "The network thread failed, no more network clients: " + e);
+            }
+        } finally {
+            closeQuietly(selector);
+        }
+    }
+
+    /** Until the next handshake falls due, at most a second; 0 would mean for ever. */
+    private long selectTimeoutMillis() {
+        long next = Long.MAX_VALUE;
+        for (Peer p : introducing) {
+            next = Math.min(next, p.deadline);
+        }
+        if (next == Long.MAX_VALUE) {
+            return 1000;
+        }
+        return Math.max(1L, Math.min(1000L, (next - System.nanoTime()) / 1_000_000L + 1));
+    }
+
+    /**
+     * One round: accept what is waiting, read what every ready client sent, then hand it over, the
+     * clients whose input ended first; then run what is due.
+     */
+    private void round() throws IOException {
+        List<Peer> ready = new ArrayList<>();
+        Iterator<SelectionKey> keys = selector.selectedKeys().iterator();
+        while (keys.hasNext()) {
+            SelectionKey key = keys.next();
+            keys.remove();
+            if (!key.isValid()) {
+                continue;
+            }
+            if (key.isAcceptable()) {
+                acceptAll();
+            } else if (key.isReadable()) {
+                Peer p = (Peer) key.attachment();
+                read(p);
+                ready.add(p);
+            }
+        }
+        for (Peer p : ready) {
+            if (p.ended) {
+                deliver(p);
+            }
+        }
+        for (Peer p : ready) {
+            if (!p.ended) {
+                deliver(p);
+            }
+        }
+        expireHandshakes();
+        simulation.pump();
+    }
+
+    private void acceptAll() {
+        while (true) {
+            SocketChannel channel;
+            try {
+                channel = serverSocket.accept();
+            } catch (IOException e) {
+                if (!closed) {
+                    log.logIt("X", "Accepting a connection failed: " + e.getMessage());
+                }
+                return;
+            }
+            if (channel == null) {
+                return;
+            }
+            accepted(channel);
+        }
+    }
+
+    private void accepted(SocketChannel channel) {
+        String address;
+        try {
+            address = String.valueOf(channel.getRemoteAddress());
+        } catch (IOException e) {
+            closeQuietly(channel);
+            return;
+        }
+        String description = "client " + clients.nextNumber() + " (" + address + ")";
         ClientConnection c = new ClientConnection(description);
         if (!clients.add(c)) {
             closeQuietly(channel);
@@ -118,35 +228,116 @@ public final class ClientListener {
         try {
             channel.configureBlocking(false);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
-            ChannelInput in = new ChannelInput(channel);
-            in.setTimeout(connectTimeoutMillis);
             OutboundQueue out = OutboundQueue.start(new ChannelTransport(channel), queueLimit, "writer " + description,
                     c::close);
-            c.setInputOutputStreams(in, out);
-            c.exchangeIntroductions();
-            in.setTimeout(0);
-        } catch (SocketTimeoutException e) {
-            handshakeFailed(channel, c, "no CONNECT within " + connectTimeoutMillis + " ms (connectTimeout)");
-            return;
+            c.setInputOutputStreams(null, out);
+            simulation.attach(c, description, Simulation.Link.SHARED_READER);
+            Peer p = new Peer(channel, c, System.nanoTime() + connectTimeoutNanos);
+            channel.register(selector, SelectionKey.OP_READ, p);
+            introducing.add(p);
         } catch (IOException e) {
-            handshakeFailed(channel, c, e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
+            c.close("cannot set up the connection: " + e.getMessage());
+            closeQuietly(channel);
+        }
+    }
+
+    /** Reads what the client has sent (up to a round's share); notes the end of its input. */
+    private void read(Peer p) {
+        int total = 0;
+        List<byte[]> chunks = new ArrayList<>();
+        try {
+            while (total < MAX_BYTES_PER_ROUND) {
+                readBuffer.clear();
+                int n = p.channel.read(readBuffer);
+                if (n < 0) {
+                    p.ended = true;
+                    break;
+                }
+                if (n == 0) {
+                    break;
+                }
+                chunks.add(Arrays.copyOf(readBuffer.array(), n));
+                total += n;
+            }
+        } catch (ClosedChannelException e) {
+            p.ended = true;
+        } catch (IOException e) {
+            p.ended = true;
+            if (!p.connection.hasEnded()) {
+                log.log(p.connection.getDescription() + ": reading failed: " + e.getMessage());
+            }
+        }
+        byte[] all = new byte[total];
+        int at = 0;
+        for (byte[] c : chunks) {
+            System.arraycopy(c, 0, all, at, c.length);
+            at += c.length;
+        }
+        p.unread = all;
+    }
+
+    /** Hands the bytes read to the client's connection; ends the session on a protocol error or the end of input. */
+    private void deliver(Peer p) {
+        ClientConnection c = p.connection;
+        if (c.hasEnded()) {
+            closeQuietly(p.channel);
             return;
         }
-        simulation.attach(c, description, Simulation.Link.READER);
-        log.log(description + " connected (" + c.getIdentity() + ")");
-        c.run();
+        boolean wasIntroduced = c.hasIntroduced();
+        try {
+            c.receive(p.unread, 0, p.unread.length);
+        } catch (IOException e) {
+            String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+            if (c.hasIntroduced()) {
+                c.protocolError(reason);
+            } else {
+                handshakeFailed(p, reason);
+            }
+            closeQuietly(p.channel);
+            return;
+        }
+        p.unread = null;
+        if (!wasIntroduced && c.hasIntroduced()) {
+            introducing.remove(p);
+            log.log(c.getDescription() + " connected (" + c.getIdentity() + ")");
+        }
+        if (p.ended) {
+            introducing.remove(p);
+            if (c.hasIntroduced()) {
+                c.endOfInput();
+            } else {
+                handshakeFailed(p, "the connection closed before CONNECT");
+            }
+            closeQuietly(p.channel);
+        }
     }
 
-    private void handshakeFailed(SocketChannel channel, ClientConnection c, String reason) {
-        log.log(c.getDescription() + ": handshake failed: " + reason);
-        c.close("handshake failed");
-        closeQuietly(channel);
+    private void expireHandshakes() {
+        long now = System.nanoTime();
+        Iterator<Peer> it = introducing.iterator();
+        while (it.hasNext()) {
+            Peer p = it.next();
+            if (p.connection.hasEnded()) {
+                it.remove();
+            } else if (now - p.deadline >= 0) {
+                it.remove();
+                handshakeFailed(p, "no CONNECT within " + connectTimeoutNanos / 1_000_000L + " ms (connectTimeout)");
+                closeQuietly(p.channel);
+            }
+        }
     }
 
-    /** Stops accepting; connections already made stay open. */
+    private void handshakeFailed(Peer p, String reason) {
+        introducing.remove(p);
+        log.log(p.connection.getDescription() + ": handshake failed: " + reason);
+        p.connection.close("handshake failed");
+    }
+
+    /** Stops accepting and reading; the connections already made are closed by their registry. */
     public void close() {
         closed = true;
         closeQuietly(serverSocket);
+        selector.wakeup();
     }
 
     private static void closeQuietly(AutoCloseable c) {

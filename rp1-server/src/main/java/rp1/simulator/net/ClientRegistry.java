@@ -52,12 +52,23 @@ public final class ClientRegistry {
         return open.size();
     }
 
-    /** Refuses new connections and closes every open one, logging {@code reason} for each. */
+    /**
+     * Refuses new connections and closes every open one, logging {@code reason} for each; returns once
+     * each one's end has been logged (a client leaving on its own at that moment included), at most a
+     * second per connection.
+     */
     public void closeAll(String reason) {
         closing = true;
         List<ClientConnection> all = new ArrayList<>(open);
         for (ClientConnection c : all) {
             c.close(reason);
+        }
+        try {
+            for (ClientConnection c : all) {
+                c.awaitEnded(1000);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
         open.clear();
     }

@@ -30,7 +30,9 @@ class MisbehavingClientsTest {
 
     @Test
     void misbehavingClientsAreDroppedWhileAWellBehavedClientsHeartbeatsArriveOnTime() throws Exception {
-        RunningServer server = TestServer.start(dir, "simulationSpeed=10", "clientQueueLimit=16", "connectTimeout=0.5");
+        // Its clients use heartbeats without placing a robot: time must run without waiting for one.
+        RunningServer server = TestServer.start(dir, "simulationSpeed=10", "clientQueueLimit=16", "connectTimeout=0.5",
+                "waitForClients=0");
         int port = server.getPort();
         try {
             TcpRobot good = TcpRobot.connect(port, "good").startLoop();
