@@ -45,16 +45,16 @@ final class LoadedClient {
     static LoadedClient create(String className, ClassLoader loader) throws StartupException {
         Class<?> type = load(className, loader);
         if (!RsRunnable.class.isAssignableFrom(type)) {
-            throw new StartupException("client class " + className + " does not implement " + RsRunnable.class.getName());
+            throw failed("client class " + className + " does not implement " + RsRunnable.class.getName());
         }
         if (Modifier.isAbstract(type.getModifiers())) {
-            throw new StartupException("client class " + className + " is abstract");
+            throw failed("client class " + className + " is abstract");
         }
         Constructor<?> constructor;
         try {
             constructor = type.getConstructor();
         } catch (NoSuchMethodException e) {
-            throw new StartupException("client class " + className + " has no public constructor without arguments");
+            throw failed("client class " + className + " has no public constructor without arguments");
         }
         try {
             return new LoadedClient(className, (RsRunnable) constructor.newInstance());
@@ -62,7 +62,7 @@ final class LoadedClient {
             throw new StartupException("client class " + className + ": its constructor failed: "
                     + describe(e.getCause()), ExitStatus.CLIENT_FAILED);
         } catch (ReflectiveOperationException e) {
-            throw new StartupException("client class " + className + " cannot be instantiated: " + describe(e));
+            throw failed("client class " + className + " cannot be instantiated: " + describe(e));
         }
     }
 
@@ -70,10 +70,15 @@ final class LoadedClient {
         try {
             return Class.forName(className, true, loader);
         } catch (ClassNotFoundException e) {
-            throw new StartupException("client class " + className + " not found on the class path (dlcName)");
+            throw failed("client class " + className + " not found on the class path (dlcName)");
         } catch (LinkageError e) {
-            throw new StartupException("client class " + className + " cannot be loaded: " + describe(e));
+            throw failed("client class " + className + " cannot be loaded: " + describe(e));
         }
+    }
+
+    /** A client that cannot even be loaded is a client failure (exit status 2), like one that fails later. */
+    private static StartupException failed(String message) {
+        return new StartupException(message, ExitStatus.CLIENT_FAILED);
     }
 
     /** An exception as one line: its type and message. */

@@ -3,6 +3,9 @@ package rp1.simulator.launch;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 
+import rp1.simulator.config.ConfigException;
+import rp1.simulator.config.ServerArguments;
+
 /**
  * What {@code rp1.Server.main} does: start a server in the working directory, stop it cleanly on
  * Ctrl-C or SIGTERM (clients closed, log flushed), and return the exit status. A server that cannot
@@ -14,6 +17,15 @@ public final class ServerMain {
 
     /** Runs a server until it stops; returns the process's exit status. */
     public static int run(String[] args) {
+        try {
+            if (ServerArguments.parse(args).help) {
+                System.out.println(ServerArguments.USAGE);
+                return ExitStatus.OK;
+            }
+        } catch (ConfigException e) {
+            System.err.println("rp1.Server: " + e.getMessage());
+            return ExitStatus.STARTUP_FAILED;
+        }
         Path workingDirectory = Paths.get("").toAbsolutePath();
         RunningServer server;
         try {

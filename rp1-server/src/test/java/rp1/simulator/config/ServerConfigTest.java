@@ -114,10 +114,26 @@ class ServerConfigTest {
 
     @Test
     void commandLineFlagsNeedValuesAndTheLastOneWins() throws Exception {
-        ServerArguments a = ServerArguments.parse(new String[] {"-p", "a.ini", "-f", "x.txt", "-p", "b.ini", "extra"});
+        ServerArguments a = ServerArguments.parse(new String[] {"-p", "a.ini", "-f", "x.txt", "-p", "b.ini"});
         assertEquals("b.ini", a.propertiesName);
         assertEquals("x.txt", a.planName);
         ConfigException e = assertThrows(ConfigException.class, () -> ServerArguments.parse(new String[] {"-f"}));
         assertTrue(e.getMessage().startsWith("Missing specification for -f option"));
+    }
+
+    @Test
+    void anUnknownOptionOrAStrayWordIsRefusedWithTheUsage() {
+        ConfigException option = assertThrows(ConfigException.class, () -> ServerArguments.parse(new String[] {"-x"}));
+        assertTrue(option.getMessage().startsWith("unknown option -x\nusage: java rp1.Server"), option.getMessage());
+        ConfigException word = assertThrows(ConfigException.class,
+                () -> ServerArguments.parse(new String[] {"-p", "a.ini", "clientzero.ini"}));
+        assertTrue(word.getMessage().startsWith("unexpected argument clientzero.ini\nusage:"), word.getMessage());
+    }
+
+    @Test
+    void helpIsAskedForWithDashHOrDashDashHelp() throws Exception {
+        assertTrue(ServerArguments.parse(new String[] {"-h"}).help);
+        assertTrue(ServerArguments.parse(new String[] {"--help"}).help);
+        assertFalse(ServerArguments.parse(new String[] {"-p", "a.ini"}).help);
     }
 }

@@ -96,15 +96,16 @@ class LoadedClientTest {
     }
 
     @Test
-    void aMissingClassOrOneThatIsNotAClientIsAStartupError() {
+    void aMissingClassOrOneThatIsNotAClientIsAClientFailure() {
         StartupException missing = assertThrows(StartupException.class,
                 () -> TestServer.start(dir, "dlcEnabled=true", "dlcName=no.such.Robot"));
         assertEquals("client class no.such.Robot not found on the class path (dlcName)", missing.getMessage());
-        assertEquals(ExitStatus.STARTUP_FAILED, missing.getExitStatus());
+        assertEquals(ExitStatus.CLIENT_FAILED, missing.getExitStatus(), "a client that cannot even be loaded failed");
         assertTrue(TestServer.log(dir).contains("Fatal error: client class no.such.Robot not found"));
         StartupException notAClient = assertThrows(StartupException.class,
                 () -> TestServer.start(dir, "dlcEnabled=true", "dlcName=" + NotAClient.class.getName()));
         assertTrue(notAClient.getMessage().endsWith("does not implement rp1.rossum.RsRunnable"), notAClient.getMessage());
+        assertEquals(ExitStatus.CLIENT_FAILED, notAClient.getExitStatus());
     }
 
     @Test
