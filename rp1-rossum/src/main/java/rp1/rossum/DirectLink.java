@@ -52,8 +52,8 @@ final class DirectLink {
         } catch (VirtualMachineError e) {
             throw e;
         } catch (Throwable t) {
-            close();
             onFailure.accept(t);
+            close();
         }
     }
 

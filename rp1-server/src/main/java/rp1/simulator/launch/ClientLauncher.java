@@ -7,6 +7,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 
 import rp1.rossum.RsClient;
 import rp1.rossum.RsProperties;
@@ -19,11 +20,17 @@ import rp1.simulator.net.OutboundQueue;
 import rp1.simulator.net.Transport;
 
 /**
- * Launches the dynamically loaded clients named in {@code dlcName} (behavior.md section 3.4; several
- * names may be given, comma-separated). Calls, in the original's order: constructor,
+ * Launches the dynamically loaded clients named in {@code dlcName} (docs/behavior.md section 3.4;
+ * several names may be given, comma-separated). Calls, in the original's order: constructor,
  * {@code setInputOutputStreams} (with {@code dlcSetIO}: in-process pipes, no handshake),
  * {@code setLogger} (with {@code dlcSetLog}: the server's log), then {@code initialize()} and
  * {@code run()} on a thread per client.
+ *
+ * <p>An {@code RsClient} that keeps the library's event loop is instead connected directly
+ * ({@code dlcDelivery=auto} or {@code direct}): the simulation calls its handlers on the thread that
+ * runs the tasks and its requests go straight to its session, with no pipes and no thread once
+ * {@code initialize()} has returned; it is done when its session ends. {@code dlcDelivery=pipes}
+ * keeps every loaded client on pipes.
  *
  * <p>Without {@code dlcSetIO} the client connects over TCP itself; an {@code RsClient} is given the
  * server's actual address and port in its {@code rsProperties}, any other {@code RsRunnable} has to
@@ -63,7 +70,13 @@ final class ClientLauncher implements LoadedClient.Listener {
         if (config.dlcEnabled) {
             for (String name : config.dlcNames) {
                 log.log("Loading class for client: \"" + name + "\"");
-                loaded.add(LoadedClient.create(name, loader));
+                LoadedClient c = LoadedClient.create(name, loader);
+                String whyNot = c.whyNotDirect();
+                if (whyNot != null && config.dlcSetIO && config.dlcDelivery.equals("direct")) {
+                    throw new StartupException("dlcDelivery=direct, but client class " + name + " cannot be called directly: "
+                            + whyNot + " (use dlcDelivery=auto or pipes)");
+                }
+                loaded.add(c);
             }
         }
         return new ClientLauncher(Collections.unmodifiableList(loaded), config, log);
@@ -81,7 +94,9 @@ final class ClientLauncher implements LoadedClient.Listener {
     void launch(Simulation simulation, ClientRegistry registry, int port, Outcome whenDone) throws IOException {
         outcome = whenDone;
         for (LoadedClient c : clients) {
-            if (config.dlcSetIO) {
+            if (config.dlcSetIO && !config.dlcDelivery.equals("pipes") && c.whyNotDirect() == null) {
+                connectDirect(c, simulation, registry);
+            } else if (config.dlcSetIO) {
                 connectInProcess(c, simulation, registry);
             } else {
                 pointAtServer(c, port);
@@ -102,6 +117,25 @@ final class ClientLauncher implements LoadedClient.Listener {
                 pipe -> OutboundQueue.start(Transport.of(pipe), config.clientQueueLimit, "writer " + description,
                         connection::close));
         c.setLink(link);
+        log.log(description + " connected");
+    }
+
+    /**
+     * The client's handlers are called by the simulation itself, its requests go straight to its
+     * session: no pipes, no event loop, no thread once {@code initialize()} has returned.
+     */
+    private void connectDirect(LoadedClient c, Simulation simulation, ClientRegistry registry) {
+        String description = "client " + registry.nextNumber() + " (in-process " + c.className + ", direct)";
+        ClientConnection connection = new ClientConnection(description);
+        registry.add(connection);
+        simulation.attach(connection, description, Simulation.Link.DIRECT);
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        connection.addEndListener(() -> c.sessionEnded(log, this, failure.get()));
+        connection.connectDirect((RsClient) c.client, failure::set);
+        c.setDirect(connection);
+        if (config.dlcSetLog) {
+            c.client.setLogger(log);
+        }
         log.log(description + " connected");
     }
 

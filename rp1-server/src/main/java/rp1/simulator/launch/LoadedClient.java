@@ -2,11 +2,16 @@ package rp1.simulator.launch;
 
 import java.lang.reflect.Constructor;
 import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 
+import rp1.rossum.RsClient;
+import rp1.rossum.RsProtocol;
 import rp1.rossum.RsRunnable;
+import rp1.simulator.net.ClientConnection;
 import rp1.simulator.net.InProcessClient;
 
 /**
@@ -28,7 +33,11 @@ final class LoadedClient {
     final RsRunnable client;
     private final CountDownLatch initialized = new CountDownLatch(1);
     private volatile InProcessClient link;
+    /** Whether the simulation calls the client's handlers directly (no event loop, no thread after initialize()). */
+    private volatile boolean direct;
+    private volatile ClientConnection directConnection;
     private volatile boolean failed;
+    private final AtomicBoolean done = new AtomicBoolean();
 
     private LoadedClient(String className, RsRunnable client) {
         this.className = className;
@@ -91,7 +100,56 @@ final class LoadedClient {
         this.link = link;
     }
 
-    /** Starts the client's thread: {@code initialize()}, then {@code run()}. */
+    /**
+     * Why the client's events cannot be delivered by direct calls, or null if they can: it must be an
+     * {@code RsClient} that keeps the library's own event loop and stream handling (it overrides
+     * neither {@code run()} nor {@code setInputOutputStreams}).
+     */
+    String whyNotDirect() {
+        if (!(client instanceof RsClient)) {
+            return "it is not an " + RsClient.class.getName();
+        }
+        for (String method : new String[] {"run", "setInputOutputStreams"}) {
+            Class<?> declaring = declaringClass(method);
+            if (declaring != RsClient.class && declaring != RsProtocol.class) {
+                return "it overrides " + method + "() (in " + declaring.getName() + ")";
+            }
+        }
+        return null;
+    }
+
+    private Class<?> declaringClass(String method) {
+        for (Method m : client.getClass().getMethods()) {
+            if (m.getName().equals(method) && !m.isBridge()) {
+                return m.getDeclaringClass();
+            }
+        }
+        return RsClient.class;
+    }
+
+    /** The simulation calls this client's handlers directly, through {@code connection}: after initialize() its thread ends. */
+    void setDirect(ClientConnection connection) {
+        this.directConnection = connection;
+        this.direct = true;
+    }
+
+    boolean isDirect() {
+        return direct;
+    }
+
+    /**
+     * A directly called client's session ended: it is done, as a client whose {@code run()} returns;
+     * {@code failure} is what a handler threw, or null.
+     */
+    void sessionEnded(ServerLog log, Listener listener, Throwable failure) {
+        if (failure != null) {
+            failed = true;
+            log.important("client " + className + ": a handler failed: " + describe(failure));
+        }
+        finish(listener);
+    }
+
+    /** Starts the client's thread: {@code initialize()}, then {@code run()} (for a direct client, only {@code initialize()}). */
     void start(ServerLog log, Listener listener) {
         Thread t = new Thread(() -> runClient(log, listener), "dlc " + className);
         t.setDaemon(true);
@@ -104,30 +162,44 @@ final class LoadedClient {
      */
     private void runClient(ServerLog log, Listener listener) {
         try {
-            try {
-                client.initialize();
-            } catch (Throwable t) {
-                failed = true;
-                log.important("client " + className + ": initialize() failed: " + describe(t));
-                listener.initializeFailed(this);
-                return;
-            } finally {
-                initialized.countDown();
-            }
-            try {
-                client.run();
-                log.log("client " + className + ": run() returned");
-            } catch (Throwable t) {
-                failed = true;
-                log.important("client " + className + ": run() failed: " + describe(t));
-            }
+            client.initialize();
+        } catch (Throwable t) {
+            failed = true;
+            log.important("client " + className + ": initialize() failed: " + describe(t));
+            listener.initializeFailed(this);
+            finish(listener);
+            return;
         } finally {
-            InProcessClient l = link;
-            if (l != null) {
-                l.close();
-            }
-            listener.finished(this);
+            initialized.countDown();
         }
+        if (direct) {
+            return;
+        }
+        try {
+            client.run();
+            log.log("client " + className + ": run() returned");
+        } catch (Throwable t) {
+            failed = true;
+            log.important("client " + className + ": run() failed: " + describe(t));
+        } finally {
+            finish(listener);
+        }
+    }
+
+    /** The client is done: its connection is closed (if still open) and the listener told, once. */
+    private void finish(Listener listener) {
+        if (!done.compareAndSet(false, true)) {
+            return;
+        }
+        InProcessClient l = link;
+        if (l != null) {
+            l.close();
+        }
+        ClientConnection c = directConnection;
+        if (c != null) {
+            c.close("the client is done");
+        }
+        listener.finished(this);
     }
 
     boolean hasFailed() {

@@ -1,5 +1,7 @@
 package rp1.simulator.net;
 
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -9,13 +11,13 @@ import rp1.rossum.RsConnection;
 /**
  * The server's end of one client session as the server runs it: an {@link RsConnection} whose log
  * lines name the client ("client 3 (/127.0.0.1:40312): ..."), which the server can close with a
- * reason, and which tells a listener once when the session has ended, whoever ended it.
+ * reason, and which tells its listeners once when the session has ended, whoever ended it.
  */
 public final class ClientConnection extends RsConnection {
     private final String description;
     private final AtomicBoolean ended = new AtomicBoolean();
     private final CountDownLatch told = new CountDownLatch(1);
-    private volatile Runnable endListener = () -> { };
+    private final List<Runnable> endListeners = new CopyOnWriteArrayList<>();
     /** Set when the server closed the session; the reader's own complaint about it is then noise. */
     private volatile boolean closedByServer;
 
@@ -35,8 +37,8 @@ public final class ClientConnection extends RsConnection {
     }
 
     /** Runs {@code listener} once, after the session has ended (on the thread that ended it). */
-    public void setEndListener(Runnable listener) {
-        endListener = listener;
+    public void addEndListener(Runnable listener) {
+        endListeners.add(listener);
     }
 
     @Override
@@ -79,7 +81,9 @@ public final class ClientConnection extends RsConnection {
         super.shutdown();
         if (ended.compareAndSet(false, true)) {
             try {
-                endListener.run();
+                for (Runnable listener : endListeners) {
+                    listener.run();
+                }
             } finally {
                 told.countDown();
             }

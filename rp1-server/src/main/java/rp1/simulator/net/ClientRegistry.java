@@ -34,7 +34,7 @@ public final class ClientRegistry {
      * server is stopping, connections are refused: the caller gets false and the connection is closed.
      */
     public boolean add(ClientConnection c) {
-        c.setEndListener(() -> {
+        c.addEndListener(() -> {
             open.remove(c);
             log.log(c.getDescription() + " disconnected");
         });

@@ -3,6 +3,7 @@ package rp1.simulator.scheduler;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * The inputs waiting for the next boundary, and the order they are applied in there: first every
@@ -24,6 +25,8 @@ public final class InputQueue implements Scheduler.Boundary {
 
     private final Scheduler scheduler;
     private final List<Input> waiting = new ArrayList<>();
+    /** Inputs submitted but not yet applied (those being applied included). */
+    private final AtomicInteger unapplied = new AtomicInteger();
     private volatile Listener listener;
 
     /** A queue whose inputs {@code scheduler} applies at its boundaries. */
@@ -39,6 +42,7 @@ public final class InputQueue implements Scheduler.Boundary {
 
     /** Queues {@code input} for the next boundary. Any thread. */
     public void submit(Input input) {
+        unapplied.incrementAndGet();
         synchronized (waiting) {
             waiting.add(input);
         }
@@ -57,11 +61,20 @@ public final class InputQueue implements Scheduler.Boundary {
         }
         batch.sort(ORDER);
         Listener l = listener;
-        for (Input input : batch) {
-            if (l != null) {
-                l.applying(input, simTime);
+        try {
+            for (Input input : batch) {
+                if (l != null) {
+                    l.applying(input, simTime);
+                }
+                input.apply(simTime);
             }
-            input.apply(simTime);
+        } finally {
+            unapplied.addAndGet(-batch.size());
         }
+    }
+
+    /** Whether every input submitted so far has been applied. Any thread. */
+    public boolean isSettled() {
+        return unapplied.get() == 0;
     }
 }

@@ -11,25 +11,34 @@ import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsPlan;
+import rp1.simulator.net.ClientConnection;
 import rp1.simulator.net.InProcessClient;
 import rp1.simulator.Simulation;
 import rp1.simulator.SimulationSettings;
 
 /**
  * A whole simulation in one process for scenario tests: a floor plan, the simulation running on its
- * own thread, and clients connected through the real request path (an {@code RsClient} and an
- * {@code RsConnection} over in-memory pipes). By default it runs in lockstep with the interlock, so
- * every run of the same scenario produces the same events.
+ * own thread, and clients connected through the real request path: an {@code RsClient} and an
+ * {@code RsConnection} over in-memory pipes, or (with the system property
+ * {@code rp1.scenario.delivery=direct}) linked directly, their handlers called by the simulation. By
+ * default it runs in lockstep with the interlock, so every run of the same scenario produces the same
+ * events, whichever way they are delivered; part ids start from 1 in every scenario.
  */
 public final class Scenario implements AutoCloseable {
+    /** The system property choosing how clients are connected: "pipes" (the default) or "direct". */
+    public static final String DELIVERY = "rp1.scenario.delivery";
+
     private final Simulation simulation;
     private final Thread schedulerThread;
+    private final boolean direct = "direct".equals(System.getProperty(DELIVERY, "pipes"));
     private final List<ScenarioClient> clients = new ArrayList<>();
     private final List<Thread> threads = new ArrayList<>();
     private final List<InProcessClient> links = new ArrayList<>();
+    private final List<Runnable> closers = new ArrayList<>();
     private boolean started;
 
     private Scenario(RsPlan plan, SimulationSettings settings) {
+        Bodies.restartPartIds();
         simulation = new Simulation(plan, settings, QUIET);
         schedulerThread = new Thread(simulation::runPaused, "scenario-scheduler");
         schedulerThread.setDaemon(true);
@@ -70,9 +79,9 @@ public final class Scenario implements AutoCloseable {
     }
 
     /**
-     * Starts the clock once every client's first requests have been dealt with (their pipes to the
-     * server drained), so they are all stamped at time 0 whatever the threads did. Waiting for an
-     * event does this implicitly.
+     * Starts the clock once every client's first requests have been applied (their pipes to the
+     * server drained, the inputs they became applied), so they are all stamped at time 0 whatever the
+     * threads did. Waiting for an event does this implicitly.
      */
     public synchronized void go() {
         if (started) {
@@ -87,6 +96,12 @@ public final class Scenario implements AutoCloseable {
                 Thread.onSpinWait();
             }
         }
+        while (!simulation.getInputs().isSettled()) {
+            if (System.nanoTime() > deadline) {
+                throw new AssertionError("the clients' first requests were not applied within 10 s");
+            }
+            Thread.onSpinWait();
+        }
         started = true;
         simulation.startClock();
     }
@@ -96,18 +111,31 @@ public final class Scenario implements AutoCloseable {
      * event loop. Requests the test sends afterwards go through the real protocol.
      */
     public <C extends ScenarioClient> C connect(C client) {
-        InProcessClient link = new InProcessClient(simulation, client, "scenario client " + (clients.size() + 1), false);
-        links.add(link);
+        String description = "scenario client " + (clients.size() + 1);
+        if (direct) {
+            ClientConnection connection = new ClientConnection(description);
+            simulation.attach(connection, description, Simulation.Link.DIRECT);
+            connection.connectDirect(client, t -> {
+                throw new AssertionError("a handler of " + description + " failed", t);
+            });
+            closers.add(() -> connection.close("the scenario closed it"));
+        } else {
+            InProcessClient link = new InProcessClient(simulation, client, description, false);
+            links.add(link);
+            closers.add(link::close);
+        }
         client.join();
         client.beforeWaiting(this::go);
-        start(client, "scenario-client");
+        if (!direct) {
+            start(client, "scenario-client");
+        }
         clients.add(client);
         return client;
     }
 
     /** Ends the connection of the client connected {@code index}-th (from 0), as if it went away. */
     public void closeClient(int index) {
-        links.get(index).close();
+        closers.get(index).run();
     }
 
     private void start(Runnable r, String name) {
@@ -120,9 +148,10 @@ public final class Scenario implements AutoCloseable {
     @Override
     public void close() {
         simulation.shutdown();
-        for (InProcessClient link : links) {
-            link.close();
+        for (Runnable closer : closers) {
+            closer.run();
         }
+        Transcripts.record(clients);
     }
 
     /** A log that drops everything. */

@@ -40,6 +40,7 @@ public class ScenarioClient extends RsClient {
     private final List<RsEvent> events = new ArrayList<>();
     private final List<Reaction<?>> reactions = new ArrayList<>();
     private Runnable beforeWaiting = () -> { };
+    private double lastAwaited = Double.NEGATIVE_INFINITY;
 
     public ScenarioClient(RsBody body) {
         this.body = body;
@@ -133,6 +134,7 @@ public class ScenarioClient extends RsClient {
             while (true) {
                 for (RsEvent e : events) {
                     if (type.isInstance(e) && condition.test(type.cast(e))) {
+                        lastAwaited = Math.max(lastAwaited, e.simTime);
                         return type.cast(e);
                     }
                 }
@@ -153,6 +155,26 @@ public class ScenarioClient extends RsClient {
     /** The whole event stream as text with full precision, for comparing runs. */
     public synchronized String transcript() {
         return describe(events);
+    }
+
+    /** The latest simulation time of an event a test waited for (minus infinity before any). */
+    synchronized double lastAwaited() {
+        return lastAwaited;
+    }
+
+    /**
+     * The events stamped before {@code time}, as text. With the interlock, every event before the
+     * time of an event a test has seen has been handled by its client by then, whatever the threads
+     * did; later ones may still be on their way when a scenario ends.
+     */
+    synchronized String transcriptBefore(double time) {
+        List<RsEvent> before = new ArrayList<>();
+        for (RsEvent e : events) {
+            if (e.simTime < time) {
+                before.add(e);
+            }
+        }
+        return describe(before);
     }
 
     static String describe(List<RsEvent> events) {
