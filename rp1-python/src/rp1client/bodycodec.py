@@ -117,7 +117,10 @@ def read_body(r: Reader) -> Body:
         if part_type == codes.PART_UNDEFINED:
             continue
         with _ids.decoding(part_id):
-            part = _read_part(r, f, part_type)
+            try:
+                part = _read_part(r, f, part_type)
+            except (ArithmeticError, ValueError) as e:
+                raise ProtocolError(f, f"cannot build the part from these values ({e})") from None
         _read_name_and_colors(r, f, part)
         body.add_part(part)
     return body
