@@ -10,7 +10,7 @@ from typing import Callable, Dict, List, Optional
 import pytest
 
 import rp1client as rp
-from conftest import RunningServer
+from rp1client.simulator import LocalSimulator
 from support import REPO_ROOT
 
 EXAMPLES_DIR = REPO_ROOT / "rp1-python" / "examples"
@@ -66,7 +66,7 @@ def place(client: rp.Client, name: str, then: Callable[[], object] = lambda: Non
     return placements[0]
 
 
-def test_a_robot_is_placed_at_home_and_an_unknown_placement_fails(rp1_server: RunningServer) -> None:
+def test_a_robot_is_placed_at_home_and_an_unknown_placement_fails(rp1_server: LocalSimulator) -> None:
     client = rp1_server.client()
     Probe(client)
     home = place(client, "home")
@@ -76,7 +76,7 @@ def test_a_robot_is_placed_at_home_and_an_unknown_placement_fails(rp1_server: Ru
     assert (nowhere.valid, nowhere.name) == (False, "nowhere")
 
 
-def test_driving_into_a_wall_gives_range_and_contact_events_and_a_collision(rp1_server: RunningServer) -> None:
+def test_driving_into_a_wall_gives_range_and_contact_events_and_a_collision(rp1_server: LocalSimulator) -> None:
     client = rp1_server.client()
     probe = Probe(client)
     probe.record(rp.RangeSensorEvent, rp.ContactSensorEvent, rp.MotionStartedEvent, rp.MotionHaltedEvent)
@@ -96,7 +96,7 @@ def test_driving_into_a_wall_gives_range_and_contact_events_and_a_collision(rp1_
     assert halted.x == pytest.approx(halted.y) and 1.5 < halted.x < 1.7, "stopped at the diagonal wall"
 
 
-def test_heartbeats_arrive_at_every_interval_until_cancelled(rp1_server: RunningServer) -> None:
+def test_heartbeats_arrive_at_every_interval_until_cancelled(rp1_server: LocalSimulator) -> None:
     client = rp1_server.client()
     Probe(client)
     beats: List[rp.HeartbeatEvent] = []
@@ -113,7 +113,7 @@ def test_heartbeats_arrive_at_every_interval_until_cancelled(rp1_server: Running
     assert [(b.sequence, b.sim_time) for b in beats] == [(1, 0.5), (2, 1.0), (3, 1.5), (4, 2.0)]
 
 
-def test_the_plan_request_brings_the_white_room(rp1_server: RunningServer) -> None:
+def test_the_plan_request_brings_the_white_room(rp1_server: LocalSimulator) -> None:
     client = rp1_server.client()
     plans: List[rp.PlanEvent] = []
     client.add_handler(rp.PlanEvent, lambda e: (plans.append(e), client.stop()))
@@ -130,7 +130,7 @@ def test_the_plan_request_brings_the_white_room(rp1_server: RunningServer) -> No
     assert home.orientation == pytest.approx(math.radians(225))
 
 
-def test_encoder_and_sensor_ids_are_the_ones_the_simulator_gives_the_parts(rp1_server: RunningServer) -> None:
+def test_encoder_and_sensor_ids_are_the_ones_the_simulator_gives_the_parts(rp1_server: LocalSimulator) -> None:
     client = rp1_server.client()
     probe = Probe(client)
     probe.record(rp.EncoderStatusEvent, rp.RangeSensorEvent)
@@ -148,7 +148,7 @@ def test_encoder_and_sensor_ids_are_the_ones_the_simulator_gives_the_parts(rp1_s
     assert (polled.sensor_id, polled.sim_time, polled.status) == (probe.sonar.id, 1.5, False)
 
 
-def test_two_python_robots_meeting_halt_short_of_each_other(corridor_server: RunningServer) -> None:
+def test_two_python_robots_meeting_halt_short_of_each_other(corridor_server: LocalSimulator) -> None:
     robots = {name: corridor_server.client() for name in ("west", "east")}
     halted: Dict[str, rp.MotionHaltedEvent] = {}
     for name, client in robots.items():
@@ -174,7 +174,7 @@ def test_two_python_robots_meeting_halt_short_of_each_other(corridor_server: Run
     assert west.y == pytest.approx(0.5) and east.y == pytest.approx(0.5)
 
 
-def test_the_wanderer_prints_its_position_every_second_and_exits(rp1_server: RunningServer) -> None:
+def test_the_wanderer_prints_its_position_every_second_and_exits(rp1_server: LocalSimulator) -> None:
     done = subprocess.run([sys.executable, str(EXAMPLES_DIR / "wanderer.py"), "--host", rp1_server.host,
                            "--port", str(rp1_server.port), "--duration", "12"],
                           capture_output=True, text=True, timeout=LIMIT)
@@ -189,7 +189,7 @@ def test_the_wanderer_prints_its_position_every_second_and_exits(rp1_server: Run
     assert all(0.0 < float(x) < 3.0 and 0.0 < float(y) < 3.0 for x, y in positions), "inside the room"
 
 
-def test_clientzero_asks_for_the_plan_and_is_placed_at_home(rp1_server: RunningServer) -> None:
+def test_clientzero_asks_for_the_plan_and_is_placed_at_home(rp1_server: LocalSimulator) -> None:
     process = subprocess.Popen([sys.executable, str(EXAMPLES_DIR / "clientzero.py"), "--host", rp1_server.host,
                                 "--port", str(rp1_server.port)], stdout=subprocess.PIPE, text=True)
     try:
@@ -198,3 +198,9 @@ def test_clientzero_asks_for_the_plan_and_is_placed_at_home(rp1_server: RunningS
         process.terminate()
         process.wait(LIMIT)
     assert lines == ["floor plan 'White Room (RP1 rev. 0.4)'", 'placed at "home" (2.500, 2.500); click to move']
+
+
+def test_without_jars_the_simulator_cannot_start_and_says_how_to_build_them(monkeypatch, tmp_path) -> None:
+    monkeypatch.delenv("RP1_CLASSPATH", raising=False)
+    with pytest.raises(FileNotFoundError, match="run `gradle jar`"):
+        LocalSimulator(REPO_ROOT / "FloorPlans" / "WhiteRoom.txt", tmp_path, repo_root=tmp_path)
