@@ -10,12 +10,12 @@ it is free to turn again. It runs until the simulator closes the connection (or 
     python clientzero.py --host 127.0.0.1 --port 7758
 """
 
-import argparse
 import math
 import sys
 from typing import List, Optional, Tuple
 
 import rp1client as rp
+from connection import argument_parser, connect
 
 SPEED = 0.25
 BACK_OFF_DELAY = 0.5
@@ -121,15 +121,11 @@ def say(text: str) -> None:
 
 
 def main(argv: Optional[List[str]] = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--host", default=None, help="simulator host (default: rossum.ini, else 127.0.0.1)")
-    parser.add_argument("--port", type=int, default=None, help="simulator port (default: rossum.ini, else 7758)")
+    parser = argument_parser(__doc__)
     parser.add_argument("--placement", default="home", help='placement name (default "home")')
     args = parser.parse_args(argv)
-    try:
-        client = rp.Client(args.host, args.port).connect(timeout=10.0)
-    except (OSError, rp.ProtocolError) as e:
-        print(f"clientzero: {e}", file=sys.stderr)
+    client = connect(args, "clientzero")
+    if client is None:
         return 1
     with client:
         body = build_body()

@@ -14,12 +14,12 @@ not connect or be placed, 2 if the simulator went away first).
     python wanderer.py --host 127.0.0.1 --port 7758 --duration 30
 """
 
-import argparse
 import math
 import sys
 from typing import Callable, List, Optional
 
 import rp1client as rp
+from connection import argument_parser, connect
 
 SPEED = 0.25
 CLOSE = 0.3
@@ -135,16 +135,12 @@ class Wanderer:
         ways_out[(self.blocked - 1) % len(ways_out)]()
 
 def main(argv: Optional[List[str]] = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--host", default=None, help="simulator host (default: rossum.ini, else 127.0.0.1)")
-    parser.add_argument("--port", type=int, default=None, help="simulator port (default: rossum.ini, else 7758)")
+    parser = argument_parser(__doc__)
     parser.add_argument("--duration", type=float, default=60.0, help="simulated seconds to wander (default 60)")
     parser.add_argument("--placement", default="", help="placement name (default: any placement of the plan)")
     args = parser.parse_args(argv)
-    try:
-        client = rp.Client(args.host, args.port).connect(timeout=10.0)
-    except (OSError, rp.ProtocolError) as e:
-        print(f"wanderer: {e}", file=sys.stderr)
+    client = connect(args, "wanderer")
+    if client is None:
         return 1
     with client:
         body = build_body()

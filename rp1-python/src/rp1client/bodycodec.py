@@ -12,7 +12,7 @@ from .body import (Body, BodyPart, Circle, ContactSensor, PaintSensor, Painter, 
                    _ids)
 from .errors import ProtocolError
 from .steering import AckermanSteering, Caster, DifferentialSteering, Wheel, WheelSystem
-from .wire import Reader, Writer
+from .wire import Reader, Writer, read_exactly
 
 _DIFFERENTIAL = 0
 _ACKERMAN = 1
@@ -98,11 +98,7 @@ def decode_body(data: bytes) -> Body:
     Raises:
         ProtocolError: naming the field, if the bytes are malformed or truncated.
     """
-    r = Reader(data)
-    body = read_body(r)
-    if r.remaining:
-        raise ProtocolError("body", f"{r.remaining} bytes left over after the last part")
-    return body
+    return read_exactly(data, read_body, "body", "the last part")
 
 
 def read_body(r: Reader) -> Body:

@@ -12,7 +12,7 @@ from typing import ClassVar, Dict, Optional, Tuple, Type
 from . import codes
 from .errors import ProtocolError
 from .plan import Plan, read_plan, write_plan
-from .wire import Reader, Record, Writer
+from .wire import Reader, Record, Writer, read_exactly
 
 _PREFIX = struct.Struct(">iidi")
 
@@ -329,9 +329,5 @@ def decode_event(data: bytes) -> Tuple[Event, int]:
     Raises:
         ProtocolError: naming the field, if the bytes are not exactly one well-formed event.
     """
-    r = Reader(data)
-    result = read_event(r)
-    if r.remaining:
-        raise ProtocolError("event", f"{r.remaining} bytes left over after the event")
-    return result
+    return read_exactly(data, read_event, "event", "the event")
 

@@ -7,11 +7,11 @@ labels) has the defaults the Java library gives a received plan.
 """
 
 import math
-from typing import ClassVar, Dict, Iterator, List, Optional, Sequence, Tuple, Type, TypeVar
+from typing import ClassVar, Dict, Generic, Iterator, List, Optional, Sequence, Tuple, Type, TypeVar
 
 from . import codes
 from .errors import ProtocolError
-from .wire import Color, Reader, Writer
+from .wire import Color, Reader, Writer, read_exactly
 
 Point = Tuple[float, float]
 
@@ -50,9 +50,6 @@ class GeometricObject(PlanObject):
         """Whether the geometry has the number of values this kind of object needs."""
         return len(self.geometry) == self.geometry_size
 
-    def _value(self, i: int) -> Optional[float]:
-        return self.geometry[i] if self.is_geometry_set else None
-
     def _write(self, w: Writer) -> None:
         w.i32(len(self.geometry))
         for v in self.geometry:
@@ -62,6 +59,18 @@ class GeometricObject(PlanObject):
     def _read(cls, r: Reader, name: str, field: str) -> "GeometricObject":
         n = r.count(field + " geometry count", codes.MAX_GEOMETRY_DOUBLES)
         return cls(name, [r.f64(f"{field} geometry[{k}]") for k in range(n)])
+
+
+class _GeometryValue:
+    """One value of a plan object's geometry, by position; None while the geometry is not set."""
+
+    def __init__(self, position: int) -> None:
+        self.position = position
+
+    def __get__(self, obj: Optional[GeometricObject], owner: type) -> Optional[float]:
+        if obj is None or not obj.is_geometry_set:
+            return None
+        return obj.geometry[self.position]
 
 
 def _pairs(values: Sequence[float]) -> Tuple[Point, ...]:
@@ -95,17 +104,9 @@ class Target(GeometricObject):
     kind = "target"
     geometry_size = 3
 
-    @property
-    def x(self) -> Optional[float]:
-        return self._value(0)
-
-    @property
-    def y(self) -> Optional[float]:
-        return self._value(1)
-
-    @property
-    def radius(self) -> Optional[float]:
-        return self._value(2)
+    x = _GeometryValue(0)
+    y = _GeometryValue(1)
+    radius = _GeometryValue(2)
 
 
 class Placement(GeometricObject):
@@ -119,21 +120,10 @@ class Placement(GeometricObject):
         super().__init__(name, geometry)
         self.fill_color = self.line_color = Color.DARK_GRAY
 
-    @property
-    def x(self) -> Optional[float]:
-        return self._value(0)
-
-    @property
-    def y(self) -> Optional[float]:
-        return self._value(1)
-
-    @property
-    def orientation(self) -> Optional[float]:
-        return self._value(2)
-
-    @property
-    def radius(self) -> Optional[float]:
-        return self._value(3)
+    x = _GeometryValue(0)
+    y = _GeometryValue(1)
+    orientation = _GeometryValue(2)
+    radius = _GeometryValue(3)
 
 
 class Paint(GeometricObject):
@@ -225,6 +215,18 @@ class NavLink(PlanObject):
 T = TypeVar("T", bound=PlanObject)
 
 
+class _ObjectsOf(Generic[T]):
+    """A read-only list attribute of :class:`Plan`: its objects of one class, in plan order."""
+
+    def __init__(self, kind: Type[T]) -> None:
+        self.kind = kind
+
+    def __get__(self, plan: "Optional[Plan]", owner: type) -> List[T]:
+        if plan is None:
+            raise AttributeError(f"objects of {self.kind.__name__} belong to a plan instance")
+        return plan.objects_of(self.kind)
+
+
 class Plan:
     """A floor plan: a caption and its objects in the order of the floor-plan file."""
 
@@ -261,29 +263,12 @@ class Plan:
         """The objects of one class, in plan order."""
         return [o for o in self._objects if isinstance(o, kind)]
 
-    @property
-    def walls(self) -> List[Wall]:
-        return self.objects_of(Wall)
-
-    @property
-    def targets(self) -> List[Target]:
-        return self.objects_of(Target)
-
-    @property
-    def placements(self) -> List[Placement]:
-        return self.objects_of(Placement)
-
-    @property
-    def paints(self) -> List[Paint]:
-        return self.objects_of(Paint)
-
-    @property
-    def nav_nodes(self) -> List[NavNode]:
-        return self.objects_of(NavNode)
-
-    @property
-    def nav_links(self) -> List[NavLink]:
-        return self.objects_of(NavLink)
+    walls = _ObjectsOf(Wall)
+    targets = _ObjectsOf(Target)
+    placements = _ObjectsOf(Placement)
+    paints = _ObjectsOf(Paint)
+    nav_nodes = _ObjectsOf(NavNode)
+    nav_links = _ObjectsOf(NavLink)
 
     def set_target_selected(self, name: str, selected: bool) -> None:
         """Records a target's selection as a target-selection event reports it."""
@@ -366,8 +351,4 @@ def decode_plan(data: bytes) -> Optional[Plan]:
     Raises:
         ProtocolError: naming the field, if the bytes are not one well-formed plan.
     """
-    r = Reader(data)
-    plan = read_plan(r)
-    if r.remaining:
-        raise ProtocolError("plan", f"{r.remaining} bytes left over after the last object")
-    return plan
+    return read_exactly(data, read_plan, "plan", "the last object")

@@ -12,7 +12,7 @@ from typing import ClassVar, Dict, List, Optional, Tuple, Type
 
 from . import codes
 from .errors import ProtocolError
-from .wire import Color, Reader, Record, Writer
+from .wire import Color, Reader, Record, Writer, read_exactly
 
 _PREFIX = struct.Struct(">ii")
 
@@ -292,9 +292,5 @@ def decode_request(data: bytes) -> Request:
     Raises:
         ProtocolError: naming the field, if the bytes are not one well-formed request.
     """
-    r = Reader(data)
-    request = read_request(r)
-    if r.remaining:
-        raise ProtocolError("request", f"{r.remaining} bytes left over after the request")
-    return request
+    return read_exactly(data, read_request, "request", "the request")
 

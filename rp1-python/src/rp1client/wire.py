@@ -8,7 +8,7 @@ once and read and written from the same declaration.
 
 import struct
 from dataclasses import dataclass
-from typing import Any, ClassVar, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, ClassVar, Dict, List, Optional, Sequence, Tuple, TypeVar, Union
 
 from .codes import MAX_COLORS
 from .errors import ProtocolError
@@ -266,6 +266,18 @@ class Writer:
 
 #: Field kinds of a :class:`Record`: struct codes, plus "s" for a STR.
 _KINDS = {"i": "i", "d": "d", "?": "?", "s": None}
+
+V = TypeVar("V")
+
+
+def read_exactly(data: Buffer, read: Callable[[Reader], V], field: str, last: str) -> V:
+    """Reads one value from ``data`` with ``read``; bytes left over after it are a protocol error
+    (``FIELD: N bytes left over after LAST``)."""
+    r = Reader(data)
+    value = read(r)
+    if r.remaining:
+        raise ProtocolError(field, f"{r.remaining} bytes left over after {last}")
+    return value
 
 
 class Record:
