@@ -81,10 +81,10 @@ def test_every_kind_of_part_survives_a_round_trip() -> None:
 
 
 def test_an_ackerman_body_the_simulator_cannot_build_is_a_protocol_error() -> None:
-    w = Writer().str("car").i32(1).i32(1).i32(1).i32(1)
+    w = Writer().utf("car").i32(1).i32(1).i32(1).i32(1)
     for value in (0.3, 0.4, 0.05, 0.0):
         w.f64(value)
-    w.bool(False).i32(0)
+    w.boolean(False).i32(0)
     with pytest.raises(rp.ProtocolError, match=r"^part\[0\]: cannot build the part"):
         rp.decode_body(w.getvalue())
 

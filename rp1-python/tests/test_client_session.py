@@ -262,3 +262,17 @@ def test_a_bad_port_in_rossum_ini_names_key_value_and_file(tmp_path) -> None:
     path.write_text("port=99\n")
     with pytest.raises(rp.SettingsError, match=r"port number 99 not in valid range \[1025,32767\] \(.*rossum.ini\)"):
         rp.ClientSettings.load(str(path))
+
+
+def test_close_from_another_thread_ends_a_waiting_run() -> None:
+    import socket
+    import threading
+
+    ours, theirs = socket.socketpair()
+    client = rp.Client("h", 1234).attach(ours, handshake=False)
+    loop = threading.Thread(target=client.run)
+    loop.start()
+    client.close()
+    loop.join(5.0)
+    assert not loop.is_alive() and client.closed
+    theirs.close()

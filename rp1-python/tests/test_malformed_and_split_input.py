@@ -103,22 +103,22 @@ def test_a_bad_header_or_event_code_ends_the_session_with_the_field_named(data: 
 
 
 def _body_with(part: bytes, name: str = "") -> bytes:
-    return Writer().str(name).i32(1).getvalue() + part
+    return Writer().utf(name).i32(1).getvalue() + part
 
 
 def _two_part_body_with_type_4() -> bytes:
-    circle = Writer().i32(1).i32(codes.PART_CIRCLE).f64(0).f64(0).f64(1).str("c")
+    circle = Writer().i32(1).i32(codes.PART_CIRCLE).f64(0).f64(0).f64(1).utf("c")
     for _ in range(4):
         circle.i32(0)
-    return Writer().str("b").i32(2).getvalue() + circle.getvalue() + Writer().i32(2).i32(4).getvalue()
+    return Writer().utf("b").i32(2).getvalue() + circle.getvalue() + Writer().i32(2).i32(4).getvalue()
 
 
 def _plan(*objects: bytes) -> bytes:
-    return Writer().i32(1).str("p").i32(len(objects)).getvalue() + b"".join(objects)
+    return Writer().i32(1).utf("p").i32(len(objects)).getvalue() + b"".join(objects)
 
 
 def _node(name: str) -> bytes:
-    return Writer().i32(codes.PLAN_NAV_NODE).str(name).f64(0).f64(0).str("").i32(0).getvalue()
+    return Writer().i32(codes.PLAN_NAV_NODE).utf(name).f64(0).f64(0).utf("").i32(0).getvalue()
 
 
 @pytest.mark.parametrize("decode, data, message", [
@@ -126,9 +126,9 @@ def _node(name: str) -> bytes:
     (rp.decode_body, _two_part_body_with_type_4(), "part[1].partType: type 4 (abstract BODY_SENSOR) cannot be built"),
     (rp.decode_body, _body_with(Writer().i32(1).i32(codes.PART_SHAPE).i32(-3).getvalue()),
      "part[0].outline count: -3 is outside the accepted range 0..65536"),
-    (rp.decode_body, _body_with(Writer().i32(1).i32(codes.PART_SHAPE).i32(0).str("s").i32(1).i32(300).getvalue()),
+    (rp.decode_body, _body_with(Writer().i32(1).i32(codes.PART_SHAPE).i32(0).utf("s").i32(1).i32(300).getvalue()),
      "part[0].fillColor red: 300 is outside 0..255"),
-    (rp.decode_plan, _plan(*(_node(n) for n in "abcde"), Writer().i32(codes.PLAN_NAV_LINK).str("l").str("x").getvalue()),
+    (rp.decode_plan, _plan(*(_node(n) for n in "abcde"), Writer().i32(codes.PLAN_NAV_LINK).utf("l").utf("x").getvalue()),
      'plan object[5] node0: no node called "x" was received before this link'),
     (rp.decode_plan, _plan(_node("a"), _node("b"), _node("a")), 'plan object[2] name: duplicate object name "a"'),
     (rp.decode_request, Writer().i32(codes.REQ_PLACEMENT).i32(0).i32(1).getvalue() + b"\x00\x01\x80",
@@ -172,3 +172,13 @@ def test_garbage_either_decodes_or_raises_the_one_exception() -> None:
             except rp.ProtocolError:
                 outcomes["refused"] += 1
     assert outcomes["refused"] > 0 and outcomes["decoded"] > 0, outcomes
+
+
+def test_a_plan_larger_than_the_receive_buffer_arrives_whole() -> None:
+    plan = rp.Plan("maze")
+    for i in range(2000):
+        plan.add(rp.Wall(f"wall{i}", [i, 0, i + 1, 0, i + 1, 1, i, 1]))
+    data = HEADER.pack(0, 0, 0, 2, codes.EVENT) + rp.encode_event(rp.PlanEvent(0.0, plan))
+    assert len(data) > 2 * 65536
+    events, _ = receive([data[i:i + 1000] for i in range(0, len(data), 1000)])
+    assert [rp.encode_plan(e.plan) for e in events] == [rp.encode_plan(plan)]

@@ -35,10 +35,10 @@ def test_bytes_that_are_not_modified_utf8_name_the_field(wire: str) -> None:
 
 
 def test_a_string_of_65535_bytes_is_the_longest_that_can_be_sent() -> None:
-    w = Writer().str("\u00e9" * 32767 + "a")
+    w = Writer().utf("\u00e9" * 32767 + "a")
     assert len(w.getvalue()) == 2 + 65535
     with pytest.raises(ValueError, match="string too long"):
-        Writer().str("\u00e9" * 32768)
+        Writer().utf("\u00e9" * 32768)
 
 
 def test_a_request_with_an_overlong_name_sends_nothing() -> None:
@@ -54,7 +54,7 @@ def test_a_request_with_an_overlong_name_sends_nothing() -> None:
 
 
 def test_none_is_sent_as_the_empty_string() -> None:
-    assert Writer().str(None).getvalue() == b"\x00\x00"
+    assert Writer().utf(None).getvalue() == b"\x00\x00"
 
 
 def test_colours_are_presence_flag_and_three_components() -> None:
@@ -79,7 +79,7 @@ def test_colours_are_checked_when_made() -> None:
 def test_counts_beyond_their_limit_are_refused_before_anything_is_allocated() -> None:
     data = Writer().i32(2_000_000_000).getvalue()
     with pytest.raises(rp.ProtocolError, match=r"^plan object count: 2000000000 is outside the accepted range"):
-        rp.decode_plan(Writer().i32(1).str("big").getvalue() + data)
+        rp.decode_plan(Writer().i32(1).utf("big").getvalue() + data)
 
 
 def test_running_out_of_bytes_is_reported_as_truncation_of_the_field() -> None:

@@ -5,7 +5,7 @@ each part the id on the wire, and the wheels of a wheel system the ids following
 touching this process's part-id counter.
 """
 
-from typing import Callable, Dict, List, Tuple
+from typing import Any, Callable, Dict, Tuple, Union
 
 from . import codes
 from .body import (Body, BodyPart, Circle, ContactSensor, PaintSensor, Painter, RangeSensor, Shape, TargetSensor,
@@ -36,17 +36,17 @@ def write_body(w: Writer, body: Body) -> None:
     parts = [p for p in body.parts if p.wire_type != codes.PART_UNDEFINED]
     if not parts:
         raise ValueError(f"body {body.name!r} has no part that can be sent to the simulator")
-    w.str(body.name).i32(len(parts))
+    w.utf(body.name).i32(len(parts))
     for part in parts:
         w.i32(part.id).i32(part.wire_type)
         _WRITERS[part.wire_type](w, part)
-        w.str(part.name)
+        w.utf(part.name)
         for color in (part.fill_color, part.line_color, part.hot_fill_color, part.hot_line_color):
             w.color(color)
 
 
-def _write_detector(w: Writer, part: BodyPart) -> None:
-    w.points(part.outline).f64(part.x_detector).f64(part.y_detector)  # type: ignore[attr-defined]
+def _write_detector(w: Writer, part: Union[TargetSensor, RangeSensor, PaintSensor]) -> None:
+    w.points(part.outline).f64(part.x_detector).f64(part.y_detector)
 
 
 def _write_target_sensor(w: Writer, s: TargetSensor) -> None:
@@ -70,7 +70,7 @@ def _write_paint_sensor(w: Writer, s: PaintSensor) -> None:
 def _write_wheel_system(w: Writer, system: WheelSystem) -> None:
     if isinstance(system, AckermanSteering):
         w.i32(_ACKERMAN).f64(system.track_width).f64(system.wheel_base).f64(system.drive_wheel_radius)
-        w.f64(system.max_abs_steering_angle).bool(system.dual_steering)
+        w.f64(system.max_abs_steering_angle).boolean(system.dual_steering)
     else:
         w.i32(_DIFFERENTIAL).f64(system.track_width).f64(system.drive_wheel_radius)
     w.i32(len(system.wheels))
@@ -80,15 +80,15 @@ def _write_wheel_system(w: Writer, system: WheelSystem) -> None:
         w.i32(wheel.encoder_interval_count)
 
 
-_WRITERS: Dict[int, Callable[[Writer, BodyPart], None]] = {
-    codes.PART_CIRCLE: lambda w, c: w.f64(c.x).f64(c.y).f64(c.radius),  # type: ignore[attr-defined]
-    codes.PART_SHAPE: lambda w, s: w.points(s.outline),  # type: ignore[attr-defined]
-    codes.PART_CONTACT_SENSOR: lambda w, s: w.points(s.outline),  # type: ignore[attr-defined]
-    codes.PART_PAINTER: lambda w, s: w.points(s.outline),  # type: ignore[attr-defined]
-    codes.PART_TARGET_SENSOR: _write_target_sensor,  # type: ignore[dict-item]
-    codes.PART_RANGE_SENSOR: _write_range_sensor,  # type: ignore[dict-item]
-    codes.PART_PAINT_SENSOR: _write_paint_sensor,  # type: ignore[dict-item]
-    codes.PART_WHEEL_SYSTEM: _write_wheel_system,  # type: ignore[dict-item]
+_WRITERS: Dict[int, Callable[[Writer, Any], object]] = {
+    codes.PART_CIRCLE: lambda w, c: w.f64(c.x).f64(c.y).f64(c.radius),
+    codes.PART_SHAPE: lambda w, s: w.points(s.outline),
+    codes.PART_CONTACT_SENSOR: lambda w, s: w.points(s.outline),
+    codes.PART_PAINTER: lambda w, s: w.points(s.outline),
+    codes.PART_TARGET_SENSOR: _write_target_sensor,
+    codes.PART_RANGE_SENSOR: _write_range_sensor,
+    codes.PART_PAINT_SENSOR: _write_paint_sensor,
+    codes.PART_WHEEL_SYSTEM: _write_wheel_system,
 }
 
 
@@ -103,7 +103,7 @@ def decode_body(data: bytes) -> Body:
 
 def read_body(r: Reader) -> Body:
     """Reads a body specification's payload; empty slots and undefined parts are skipped."""
-    body = Body(r.str("bodyName"))
+    body = Body(r.utf("bodyName"))
     for k in range(r.count("nParts", codes.MAX_BODY_PARTS)):
         f = f"part[{k}]"
         part_id = r.i32(f + ".partID")
@@ -137,14 +137,15 @@ def _outline(r: Reader, f: str) -> Tuple[Tuple[float, float], ...]:
 
 def _read_target_sensor(r: Reader, f: str) -> BodyPart:
     outline = _outline(r, f)
-    values = [r.f64(f + name) for name in (".xDetector", ".yDetector", ".sightAngle", ".width", ".maxRange")]
-    return TargetSensor(outline, *values, r.i32(f + ".nWidthBin"), r.i32(f + ".nRangeBin"))
+    x, y, sight = r.f64(f + ".xDetector"), r.f64(f + ".yDetector"), r.f64(f + ".sightAngle")
+    width, max_range = r.f64(f + ".width"), r.f64(f + ".maxRange")
+    return TargetSensor(outline, x, y, sight, width, max_range, r.i32(f + ".nWidthBin"), r.i32(f + ".nRangeBin"))
 
 
 def _read_range_sensor(r: Reader, f: str) -> BodyPart:
     outline = _outline(r, f)
-    values = [r.f64(f + name) for name in (".xDetector", ".yDetector", ".sightAngle", ".maxRange")]
-    return RangeSensor(outline, *values, r.i32(f + ".nRangeBin"))
+    x, y, sight = r.f64(f + ".xDetector"), r.f64(f + ".yDetector"), r.f64(f + ".sightAngle")
+    return RangeSensor(outline, x, y, sight, r.f64(f + ".maxRange"), r.i32(f + ".nRangeBin"))
 
 
 def _read_paint_sensor(r: Reader, f: str) -> BodyPart:
@@ -161,9 +162,9 @@ def _read_wheel_system(r: Reader, f: str) -> BodyPart:
     if r.i32(f + ".systemType") == _DIFFERENTIAL:
         system = DifferentialSteering(r.f64(f + ".trackWidth"), r.f64(f + ".driveWheelRadius"))
     else:
-        values = [r.f64(f + name) for name in (".trackWidth", ".wheelBase", ".driveWheelRadius",
-                                                ".maxAbsSteeringAngle")]
-        system = AckermanSteering(*values, r.bool(f + ".dualSteering"))
+        track, base = r.f64(f + ".trackWidth"), r.f64(f + ".wheelBase")
+        radius, steering = r.f64(f + ".driveWheelRadius"), r.f64(f + ".maxAbsSteeringAngle")
+        system = AckermanSteering(track, base, radius, steering, r.boolean(f + ".dualSteering"))
     for k in range(r.count(f + ".nWheels", codes.MAX_WHEELS)):
         system.add_wheel(_read_wheel(r, f"{f}.wheel[{k}]"))
     return system
@@ -196,10 +197,11 @@ _READERS: Dict[int, Callable[[Reader, str], BodyPart]] = {
 def _read_name_and_colors(r: Reader, f: str, part: BodyPart) -> None:
     """Wheels carry no name or colours: like RP1 0.60 they take the system's fill colour as both
     their fill and their line colour."""
-    part.name = r.str(f + ".name")
+    part.name = r.utf(f + ".name")
     fill = r.color(f + ".fillColor")
-    colors: List[object] = [fill, r.color(f + ".lineColor"), r.color(f + ".hotFillColor"),
-                            r.color(f + ".hotLineColor")]
-    part.fill_color, part.line_color, part.hot_fill_color, part.hot_line_color = colors  # type: ignore[assignment]
+    part.fill_color = fill
+    part.line_color = r.color(f + ".lineColor")
+    part.hot_fill_color = r.color(f + ".hotFillColor")
+    part.hot_line_color = r.color(f + ".hotLineColor")
     for wheel in getattr(part, "wheels", ()):
         wheel.fill_color = wheel.line_color = fill

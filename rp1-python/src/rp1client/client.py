@@ -61,10 +61,12 @@ class Client:
 
     def __init__(self, host: Optional[str] = None, port: Optional[int] = None, *,
                  settings: Optional[ClientSettings] = None) -> None:
-        if settings is None and (host is None or port is None):
-            settings = ClientSettings.from_working_directory()
-        self.host = host if host is not None else settings.host_name  # type: ignore[union-attr]
-        self.port = port if port is not None else settings.port  # type: ignore[union-attr]
+        if host is None or port is None:
+            settings = settings or ClientSettings.from_working_directory()
+            host = settings.host_name if host is None else host
+            port = settings.port if port is None else port
+        self.host: str = host
+        self.port: int = port
         self._sock: Any = None
         self._send_lock = threading.Lock()
         self._state_lock = threading.Lock()

@@ -180,7 +180,7 @@ class NavNode(PlanObject):
         self.links: List["NavLink"] = []
 
     def _write(self, w: Writer) -> None:
-        w.f64(self.x).f64(self.y).str(self.label).color(self.line_color)
+        w.f64(self.x).f64(self.y).utf(self.label).color(self.line_color)
 
 
 class NavLink(PlanObject):
@@ -209,7 +209,7 @@ class NavLink(PlanObject):
         return self.node0 if node is self.node1 else None
 
     def _write(self, w: Writer) -> None:
-        w.str(self.node0.name).str(self.node1.name).str(self.label).color(self.line_color)
+        w.utf(self.node0.name).utf(self.node1.name).utf(self.label).color(self.line_color)
 
 
 T = TypeVar("T", bound=PlanObject)
@@ -289,9 +289,9 @@ def write_plan(w: Writer, plan: Optional[Plan]) -> None:
     if plan is None:
         w.i32(0)
         return
-    w.i32(1).str(plan.caption).i32(len(plan))
+    w.i32(1).utf(plan.caption).i32(len(plan))
     for obj in plan:
-        w.i32(obj.type_code).str(obj.name)
+        w.i32(obj.type_code).utf(obj.name)
         obj._write(w)
 
 
@@ -299,7 +299,7 @@ def read_plan(r: Reader) -> Optional[Plan]:
     """Reads one plan; None if the sender had none."""
     if r.i32("plan available") == 0:
         return None
-    plan = Plan(r.str("plan caption"))
+    plan = Plan(r.utf("plan caption"))
     for i in range(r.count("plan object count", codes.MAX_PLAN_OBJECTS)):
         field = f"plan object[{i}]"
         obj = _read_object(r, plan, field)
@@ -311,18 +311,18 @@ def read_plan(r: Reader) -> Optional[Plan]:
 
 def _read_object(r: Reader, plan: Plan, field: str) -> PlanObject:
     type_code = r.i32(field + " type")
-    name = r.str(field + " name")
+    name = r.utf(field + " name")
     geometric = _GEOMETRIC.get(type_code)
     if geometric is not None:
         return geometric._read(r, name, field)
     if type_code == codes.PLAN_NAV_NODE:
         x = r.f64(field + " x")
         y = r.f64(field + " y")
-        return NavNode(name, x, y, r.str(field + " label"), r.color(field + " color"))
+        return NavNode(name, x, y, r.utf(field + " label"), r.color(field + " color"))
     if type_code == codes.PLAN_NAV_LINK:
-        node0 = _node(plan, r.str(field + " node0"), field + " node0")
-        node1 = _node(plan, r.str(field + " node1"), field + " node1")
-        link = NavLink(name, node0, node1, r.str(field + " label"), r.color(field + " color"))
+        node0 = _node(plan, r.utf(field + " node0"), field + " node0")
+        node1 = _node(plan, r.utf(field + " node1"), field + " node1")
+        link = NavLink(name, node0, node1, r.utf(field + " label"), r.color(field + " color"))
         node0.links.append(link)
         node1.links.append(link)
         return link

@@ -115,13 +115,13 @@ class PlacementRequest(Request):
     @classmethod
     def _read(cls, r: Reader) -> "Request":
         flag = r.i32("placement name flag")
-        return cls(r.str("placement name") if flag != 0 else None)
+        return cls(r.utf("placement name") if flag != 0 else None)
 
     def _write(self, w: Writer) -> None:
         flag = len(self.name.encode("utf-16-le", "surrogatepass")) // 2 if self.name else 0
         w.i32(flag)
         if flag:
-            w.str(self.name)
+            w.utf(self.name)
 
 
 @dataclass(frozen=True)
@@ -174,23 +174,23 @@ class PainterChangeRequest(Request):
     @classmethod
     def _read(cls, r: Reader) -> "Request":
         painter_id = r.i32("painter id")
-        if r.bool("painter erasure"):
+        if r.boolean("painter erasure"):
             return cls(painter_id, erasure=True)
-        if not r.bool("painter activation"):
+        if not r.boolean("painter activation"):
             return cls(painter_id)
-        defined = r.bool("painter trailer defined")
+        defined = r.boolean("painter trailer defined")
         x = r.f64("painter trailer x")
         y = r.f64("painter trailer y")
         width = r.f64("painter trailer width")
         return cls(painter_id, False, True, defined, x, y, width, r.color_array("painter colors"))
 
     def _write(self, w: Writer) -> None:
-        w.i32(self.painter_id).bool(self.erasure)
+        w.i32(self.painter_id).boolean(self.erasure)
         if self.erasure:
             return
-        w.bool(self.activation)
+        w.boolean(self.activation)
         if self.activation:
-            w.bool(self.trailer_defined).f64(self.x_trailer).f64(self.y_trailer).f64(self.width)
+            w.boolean(self.trailer_defined).f64(self.x_trailer).f64(self.y_trailer).f64(self.width)
             w.color_array(self.colors)
 
 
@@ -225,14 +225,14 @@ class ActuatorControlRequest(Request):
     def _read(cls, r: Reader) -> "Request":
         request = cls(r.i32("actuator id"), r.i32("actuator command"))
         for i in range(r.count("actuator parameter count", codes.MAX_ACTUATOR_PARAMETERS)):
-            name = r.str(f"actuator parameter {i} name")
+            name = r.utf(f"actuator parameter {i} name")
             request.add_parameter(name, r.f64(f"actuator parameter {i} value"))
         return request
 
     def _write(self, w: Writer) -> None:
         w.i32(self.actuator_id).i32(self.command_id).i32(len(self.parameters))
         for name, value in self.parameters:
-            w.str(name).f64(value)
+            w.utf(name).f64(value)
 
 
 @dataclass(frozen=True)
@@ -250,13 +250,13 @@ class EncoderStatusRequest(Request):
         index = r.i32("encoder request index")
         n = r.count("encoder id count", codes.MAX_ENCODERS)
         ids = tuple(r.i32(f"encoder id {i}") for i in range(n))
-        return cls(index, ids, r.bool("encoder clear on report"))
+        return cls(index, ids, r.boolean("encoder clear on report"))
 
     def _write(self, w: Writer) -> None:
         w.i32(self.request_index).i32(len(self.encoder_ids))
         for encoder_id in self.encoder_ids:
             w.i32(encoder_id)
-        w.bool(self.clear_on_report)
+        w.boolean(self.clear_on_report)
 
 
 #: The request class for each request code.

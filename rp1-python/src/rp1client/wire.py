@@ -159,11 +159,11 @@ class Reader:
     def f64(self, field: str) -> float:
         return _F64.unpack_from(self.buf, self._take(8, field))[0]
 
-    def bool(self, field: str) -> bool:
+    def boolean(self, field: str) -> bool:
         """Any non-zero byte is true, as Java's ``readBoolean`` has it."""
         return self.buf[self._take(1, field)] != 0
 
-    def str(self, field: str) -> str:
+    def utf(self, field: str) -> str:
         """A STR: unsigned 16-bit byte count, then modified UTF-8; never None."""
         n = _U16.unpack_from(self.buf, self._take(2, field))[0]
         p = self._take(n, field)
@@ -224,11 +224,11 @@ class Writer:
         self.data += _F64.pack(value)
         return self
 
-    def bool(self, value: bool) -> "Writer":
+    def boolean(self, value: bool) -> "Writer":
         self.data.append(1 if value else 0)
         return self
 
-    def str(self, text: Optional[str]) -> "Writer":
+    def utf(self, text: Optional[str]) -> "Writer":
         """A STR; None is sent as the empty string.
 
         Raises:
@@ -237,7 +237,7 @@ class Writer:
         data = encode_modified_utf8(text or "")
         if len(data) > MAX_STR_BYTES:
             raise ValueError(f"string too long for the RP1 wire format (limit {MAX_STR_BYTES} bytes): "
-                             f"{text[:40]!r}...")
+                             f"{(text or '')[:40]!r}...")
         self.data += _U16.pack(len(data))
         self.data += data
         return self
@@ -313,18 +313,18 @@ class Record:
         for layout, fields in self._runs:
             if layout is None:
                 _, attr, name = fields[0]
-                values[attr] = r.str(name)
+                values[attr] = r.utf(name)
             elif r.end - r.pos >= layout.size:
                 values.update(zip((a for _, a, _ in fields), r.unpack(layout, fields[0][2])))
             else:
                 for kind, attr, name in fields:
-                    values[attr] = r.i32(name) if kind == "i" else r.f64(name) if kind == "d" else r.bool(name)
+                    values[attr] = r.i32(name) if kind == "i" else r.f64(name) if kind == "d" else r.boolean(name)
         return values
 
     def write(self, w: Writer, source: Any) -> None:
         """Writes the attributes of ``source`` in wire order."""
         for layout, fields in self._runs:
             if layout is None:
-                w.str(getattr(source, fields[0][1]))
+                w.utf(getattr(source, fields[0][1]))
             else:
                 w.pack(layout, *(getattr(source, attr) for _, attr, _ in fields))
