@@ -108,7 +108,8 @@ def test_heartbeats_arrive_at_every_interval_until_cancelled(rp1_server: LocalSi
             client.send_timeout_request(3.0)
 
     client.add_handler(rp.HeartbeatEvent, beat)
-    client.send_heartbeat_request(0.5)
+    # At simulationSpeed=max simulated time passes only while a robot is on the floor.
+    place(client, "home", then=lambda: client.send_heartbeat_request(0.5))
     run(client, until=5.0)
     assert [(b.sequence, b.sim_time) for b in beats] == [(1, 0.5), (2, 1.0), (3, 1.5), (4, 2.0)]
 
