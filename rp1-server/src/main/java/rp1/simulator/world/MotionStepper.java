@@ -69,6 +69,11 @@ final class MotionStepper implements Task {
                 next = Math.min(next, n);
             }
         }
+        for (Robot r : placed) {
+            if (r.isTouched()) {
+                r.pressTouched(time);
+            }
+        }
         if (next < Double.POSITIVE_INFINITY) {
             wake(next);
         }

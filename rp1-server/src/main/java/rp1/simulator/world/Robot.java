@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.List;
 
 import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyContactSensor;
 import rp1.rossum.RsBodyPainter;
 import rp1.rossum.RsBodyPart;
 import rp1.rossum.RsBodyRangeSensor;
@@ -45,6 +46,10 @@ public final class Robot {
     private RsMotionRequest pending;
     private boolean moving;
     private boolean placementEvaluation;
+    /** Contact sensors another robot ran into while this one stood still, pressed at {@link #touchTime}. */
+    private final List<RsBodyContactSensor> touched = new ArrayList<>();
+    private String touchedBy;
+    private double touchTime;
 
     Robot(int number, RsBody body, EventSink events) {
         this.number = number;
@@ -236,6 +241,42 @@ public final class Robot {
             }
         }
         return Double.NaN;
+    }
+
+    /**
+     * Another robot ran into this one, which stands still: {@code sensors} touch it and go hot with its
+     * name at {@code time}, when the other robot has stopped.
+     */
+    void touchedAt(double time, List<RsBodyContactSensor> sensors, String name) {
+        touched.clear();
+        touched.addAll(sensors);
+        touchedBy = name;
+        touchTime = time;
+    }
+
+    /** Whether contact sensors are waiting to be pressed by a robot that ran into this one. */
+    boolean isTouched() {
+        return !touched.isEmpty();
+    }
+
+    /**
+     * Presses the contact sensors another robot ran into, once {@code time} has come: those not hot yet
+     * go hot with its name (one event each, in part order). They are released as any contact sensor,
+     * when this robot next starts a motion.
+     */
+    void pressTouched(double time) {
+        if (touched.isEmpty() || time < touchTime) {
+            return;
+        }
+        for (RsBodySensor s : body.getBodySensorArray()) {
+            if (touched.contains(s) && !s.getHot()) {
+                RsBodyContactSensor c = (RsBodyContactSensor) s;
+                c.setCollision(true, touchedBy);
+                c.setHot(true);
+                events.sendIfSubscribed(c.getStateChangeEvent(time));
+            }
+        }
+        touched.clear();
     }
 
     /** A halt request: any waiting request is dropped and a motion under way stops at {@code time}. */

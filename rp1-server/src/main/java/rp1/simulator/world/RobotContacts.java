@@ -1,5 +1,6 @@
 package rp1.simulator.world;
 
+import java.util.ArrayList;
 import java.util.List;
 
 import rp1.rossum.RsBodyContactSensor;
@@ -16,8 +17,8 @@ import rp1.rossum.RsTransform;
  * poses are analytic, so the search samples the interval finely enough that neither body can pass
  * through the other between samples (robots are bodies of at least a few centimetres), then narrows
  * the contact down by bisection. Each robot that was moving stops at the last whole millisecond
- * before contact, its motion marked as ended by collision; contact sensors touching the other robot
- * go hot with its name.
+ * before contact, its motion marked as ended by collision; the contact sensors of either robot that
+ * touch the other at the moment of contact go hot with its name.
  */
 final class RobotContacts {
     /** Largest relative displacement between samples, metres. */
@@ -29,6 +30,12 @@ final class RobotContacts {
     static final double LOOK_AHEAD = 0.002;
     /** The contact time is narrowed down to this, seconds. */
     private static final double PRECISION = 1.0e-5;
+    /**
+     * A contact sensor touches the other robot if it is this close to it at the moment of contact,
+     * metres: robots meeting face to face touch along parallel edges, where an exact test is at the
+     * mercy of rounding.
+     */
+    private static final double TOUCHING = 1.0e-3;
 
     private RobotContacts() {
     }
@@ -116,38 +123,65 @@ final class RobotContacts {
         return box;
     }
 
-    /** Stops each moving robot of the pair before {@code contact} (not before {@code now}). */
+    /**
+     * Stops each moving robot of the pair before {@code contact} (not before {@code now}); the contact
+     * sensors of both that touch the other robot go hot with its name: a stopped robot's when its
+     * motion ends, a robot at rest's at the time the other one stops.
+     */
     private static void stop(Robot a, Robot b, double contact, double now) {
-        stopOne(a, b, contact, now);
-        stopOne(b, a, contact, now);
+        List<RsBodyContactSensor> touchingA = touching(a, b, contact);
+        List<RsBodyContactSensor> touchingB = touching(b, a, contact);
+        double stopA = stopOne(a, contact, now);
+        double stopB = stopOne(b, contact, now);
+        press(a, b, touchingA, stopA, stopB);
+        press(b, a, touchingB, stopB, stopA);
     }
 
-    private static void stopOne(Robot r, Robot other, double contact, double now) {
+    /** Cuts the robot's motion before the contact; returns the stop time, or NaN if it was not moving into it. */
+    private static double stopOne(Robot r, double contact, double now) {
         RsMotion m = r.motion();
         if (!r.isMoving() || m == null) {
-            return;
+            return Double.NaN;
         }
         double stopAt = Math.max(now, m.time0 + Math.max(0.0, Math.floor(1000.0 * (contact - m.time0) - 0.1) / 1000.0));
         if (stopAt >= m.time1) {
-            return;
+            return Double.NaN;
         }
         m.stopMotionAtTime(stopAt);
         m.collision = true;
         m.collisionTime = contact - m.time0;
         r.getBody().setCollision(true);
-        flagContactSensors(r, other, contact);
+        return stopAt;
     }
 
-    /** Contact sensors touching the other robot at the contact time are flagged with its name; others are not. */
-    private static void flagContactSensors(Robot r, Robot other, double contact) {
+    /** The robot's contact sensors that touch the other robot at the moment of contact (both motions as requested). */
+    private static List<RsBodyContactSensor> touching(Robot r, Robot other, double contact) {
         RsSegment[][] otherEdges = edgesAt(other, contact);
         RsTransform pose = r.motion().getPoseAtTime(contact);
+        List<RsBodyContactSensor> touching = new ArrayList<>();
         for (RsBodySensor s : r.getBody().getBodySensorArray()) {
-            if (s instanceof RsBodyContactSensor) {
-                RsBodyContactSensor c = (RsBodyContactSensor) s;
-                boolean touching = RobotShapes.overlap(new RsSegment[][] {outlineAt(c, pose)}, otherEdges);
-                c.setCollision(touching, touching ? other.getLabel() : null);
+            if (s instanceof RsBodyContactSensor
+                    && RobotShapes.distance(outlineAt((RsBodyContactSensor) s, pose), otherEdges) <= TOUCHING) {
+                touching.add((RsBodyContactSensor) s);
             }
+        }
+        return touching;
+    }
+
+    /**
+     * A robot that was stopped has exactly its touching sensors flagged, to go hot when its motion ends;
+     * one at rest has them pressed when the other robot has stopped.
+     */
+    private static void press(Robot r, Robot other, List<RsBodyContactSensor> touching, double ownStop, double otherStop) {
+        if (!Double.isNaN(ownStop)) {
+            for (RsBodySensor s : r.getBody().getBodySensorArray()) {
+                if (s instanceof RsBodyContactSensor) {
+                    boolean touches = touching.contains(s);
+                    ((RsBodyContactSensor) s).setCollision(touches, touches ? other.getLabel() : null);
+                }
+            }
+        } else if (!touching.isEmpty() && !Double.isNaN(otherStop)) {
+            r.touchedAt(otherStop, touching, other.getLabel());
         }
     }
 

@@ -97,6 +97,31 @@ final class RobotShapes {
         return r;
     }
 
+    /** How far the polygon is from the nearest of the shapes, metres; 0 if they overlap. */
+    static double distance(RsSegment[] polygon, RsSegment[][] shapes) {
+        if (overlap(new RsSegment[][] {polygon}, shapes)) {
+            return 0.0;
+        }
+        double best = Double.POSITIVE_INFINITY;
+        for (RsSegment a : polygon) {
+            for (RsSegment[] shape : shapes) {
+                for (RsSegment b : shape) {
+                    best = Math.min(best, Math.min(
+                            Math.min(pointToSegment(a.x, a.y, b), pointToSegment(a.x + a.v.x, a.y + a.v.y, b)),
+                            Math.min(pointToSegment(b.x, b.y, a), pointToSegment(b.x + b.v.x, b.y + b.v.y, a))));
+                }
+            }
+        }
+        return best;
+    }
+
+    /** The distance of point (px, py) from segment {@code s}. */
+    private static double pointToSegment(double px, double py, RsSegment s) {
+        double len2 = s.v.x * s.v.x + s.v.y * s.v.y;
+        double u = len2 == 0.0 ? 0.0 : Math.max(0.0, Math.min(1.0, ((px - s.x) * s.v.x + (py - s.y) * s.v.y) / len2));
+        return Math.hypot(px - (s.x + u * s.v.x), py - (s.y + u * s.v.y));
+    }
+
     /** Whether two sets of shapes touch: an edge of one crosses an edge of the other, or one holds a vertex of the other. */
     static boolean overlap(RsSegment[][] a, RsSegment[][] b) {
         RsSegSect sect = new RsSegSect();
