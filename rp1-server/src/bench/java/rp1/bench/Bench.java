@@ -14,8 +14,9 @@ import rp1.simulator.launch.StartupException;
 
 /**
  * {@code gradle bench}: the figures of docs/performance.md. Arguments: {@code all} (default), or any of
- * {@code latency}, {@code connect}, {@code throughput}, and {@code robots=1,10,100} to choose the
- * robot counts of the throughput runs. Figures only; nothing is asserted.
+ * {@code latency}, {@code connect}, {@code cold}, {@code pacing}, {@code throughput}, {@code longrun},
+ * {@code network}; {@code robots=1,100,1000} chooses the robot counts of the throughput runs,
+ * {@code xmx=512m} their heap. Figures only; nothing is asserted.
  */
 public final class Bench {
     private static final double MEASURE_SECONDS = 3.0;
@@ -26,10 +27,13 @@ public final class Bench {
 
     public static void main(String[] args) throws Exception {
         List<String> what = new ArrayList<>();
-        List<Integer> robots = List.of(1, 10, 100);
+        List<Integer> robots = List.of(1, 10, 100, 1000, 10000);
+        String xmx = "512m";
         for (String a : args) {
             if (a.startsWith("robots=")) {
                 robots = parseCounts(a.substring("robots=".length()));
+            } else if (a.startsWith("xmx=")) {
+                xmx = a.substring("xmx=".length());
             } else {
                 what.add(a);
             }
@@ -43,10 +47,26 @@ public final class Bench {
         if (all || what.contains("connect")) {
             connect();
         }
+        if (all || what.contains("cold")) {
+            ColdStart.run(3);
+        }
+        if (all || what.contains("pacing")) {
+            Pacing.run();
+        }
         if (all || what.contains("throughput")) {
             for (int n : robots) {
-                Throughput.run(n, MEASURE_SECONDS * 2);
+                int status = Child.run(xmx, Throughput.class, System.out::println, String.valueOf(n),
+                        String.valueOf(n >= 1000 ? 2 * MEASURE_SECONDS : MEASURE_SECONDS));
+                if (status != 0) {
+                    System.out.println(n + " robots: the run failed with status " + status);
+                }
             }
+        }
+        if (all || what.contains("longrun")) {
+            Child.run(xmx, LongRun.class, System.out::println, "100000");
+        }
+        if (all || what.contains("network")) {
+            NetworkClients.run(100, MEASURE_SECONDS);
         }
         System.exit(0);
     }

@@ -33,6 +33,16 @@ final class Connecting {
         return millis;
     }
 
+    /** Runs the client side of a join once against a server in this process, so that it is warm. */
+    static void warmUp() throws Exception {
+        rp1.simulator.launch.RunningServer server = BenchServer.start();
+        try {
+            placeInARow(server.getPort(), 20);
+        } finally {
+            server.stop();
+        }
+    }
+
     /** A client that can end its session. */
     private static final class Joiner extends RsClient {
         void leave() {

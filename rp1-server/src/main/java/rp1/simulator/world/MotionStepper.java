@@ -1,23 +1,36 @@
 package rp1.simulator.world;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
+import java.util.PriorityQueue;
 
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
 import rp1.simulator.scheduler.TaskHandle;
 
 /**
- * The one recycled motion task of the simulation (behavior.md section 4.4). When it runs at time T it
- * evaluates every robot that needs it: motions are brought to T and waiting requests started, robots
- * about to touch each other are stopped before they do, then sensors are read and ended motions
- * reported. It queues itself again for the earliest next evaluation any robot asked for.
+ * Motion evaluation (docs/behavior.md sections 4.4 and 5.4). Each robot that needs it (moving, a
+ * request to start, just placed, or run into by another robot) has its own next evaluation time; one
+ * recycled task runs at the earliest of them and evaluates the robots due then, in joining order:
+ * motions brought to the time and waiting requests started, the coming interval searched for contacts
+ * with nearby robots, sensors read and ended motions reported. A moving robot is evaluated every
+ * modelling interval from its own last evaluation and at the end of its motion, as a robot alone was
+ * in RP1 0.60; other robots do not add evaluations to it (0.60 evaluated every moving robot whenever
+ * any robot needed it, which made a crowd cost the square of its size).
+ *
+ * <p>A request for a moving robot takes effect at its next evaluation; for a robot at rest, at once.
  */
 final class MotionStepper implements Task {
+    private static final Comparator<Robot> DUE =
+            Comparator.comparingDouble(Robot::nextEvaluation).thenComparingInt(Robot::getNumber);
+
     private final World world;
     private final Scheduler scheduler;
     private final double interval;
+    private final PriorityQueue<Robot> due = new PriorityQueue<>(DUE);
     private TaskHandle queued = TaskHandle.NONE;
+    private double queuedTime = Double.NaN;
 
     MotionStepper(World world, Scheduler scheduler, double interval) {
         this.world = world;
@@ -25,58 +38,88 @@ final class MotionStepper implements Task {
         this.interval = interval;
     }
 
+    /** The robot is evaluated at {@code time}, or earlier if it already is due earlier. */
+    void evaluateBy(Robot r, double time) {
+        if (r.isDue() && r.nextEvaluation() <= time) {
+            return;
+        }
+        if (r.isDue()) {
+            due.remove(r);
+        }
+        r.setNextEvaluation(time);
+        due.add(r);
+        requeue();
+    }
+
     /**
-     * Queues the task at {@code time} unless it is already queued: then the entry already there stands,
-     * so a request for a moving robot takes effect at its next step (docs/behavior.md section 4.4).
+     * A request for the robot: a robot at rest is evaluated at {@code time}; one already due keeps its
+     * time (a moving robot starts the new motion at its next step, as in RP1 0.60).
      */
-    void wake(double time) {
-        if (!queued.isScheduled()) {
-            queued = scheduler.schedule(time, Scheduler.NORMAL, this);
+    void wake(Robot r, double time) {
+        if (!r.isDue()) {
+            evaluateBy(r, time);
         }
     }
 
-    /** The task is removed when no robot is left. */
-    void cancel() {
+    /** The robot leaves: no more evaluations. */
+    void forget(Robot r) {
+        if (r.isDue()) {
+            due.remove(r);
+            r.clearNextEvaluation();
+            requeue();
+        }
+    }
+
+    /** Keeps the task queued at the earliest evaluation due. */
+    private void requeue() {
+        if (due.isEmpty()) {
+            queued.cancel();
+            return;
+        }
+        double first = due.peek().nextEvaluation();
+        if (queued.isScheduled() && queuedTime == first) {
+            return;
+        }
         queued.cancel();
+        queuedTime = first;
+        queued = scheduler.schedule(first, Scheduler.NORMAL, this);
     }
 
     @Override
     public void run(double time) {
+        List<Robot> group = new ArrayList<>();
+        while (!due.isEmpty() && due.peek().nextEvaluation() <= time) {
+            Robot r = due.poll();
+            r.clearNextEvaluation();
+            group.add(r);
+        }
         List<Robot> active = new ArrayList<>();
-        for (Robot r : world.getRobots()) {
+        for (Robot r : group) {
             if (r.needsProcessing()) {
                 active.add(r);
             }
         }
-        if (active.isEmpty()) {
-            return;
-        }
         for (Robot r : active) {
             r.advance(time);
             if (r.hasPendingRequest()) {
-                r.startPendingMotion(time, world.getWalls());
+                r.startPendingMotion(time, world.wallsForMotion(r, r.pendingRequest()));
             }
         }
-        List<Robot> placed = world.getPlacedRobots();
-        if (placed.size() > 1 && world.robotsInteract()) {
-            RobotContacts.resolve(placed, time, time + interval + RobotContacts.LOOK_AHEAD);
-        }
-        double next = Double.POSITIVE_INFINITY;
+        world.searchContacts(active, time, time + interval + RobotContacts.LOOK_AHEAD);
         for (Robot r : active) {
-            r.sense(time, world.getPlan(), world.obstaclesFor(r, placed));
-            double n = r.finish(time, interval);
-            if (!Double.isNaN(n)) {
-                next = Math.min(next, n);
+            r.sense(time, world.getPlan(), world.obstaclesFor(r, time));
+            double next = r.finish(time, interval);
+            world.indexRobot(r, time, interval);
+            if (!Double.isNaN(next)) {
+                evaluateBy(r, next);
             }
         }
-        for (Robot r : placed) {
+        for (Robot r : group) {
             if (r.isTouched()) {
                 r.pressTouched(time);
             }
         }
-        if (next < Double.POSITIVE_INFINITY) {
-            wake(next);
-        }
+        requeue();
         world.changed(time);
     }
 }

@@ -46,6 +46,11 @@ public final class Robot {
     private RsMotionRequest pending;
     private boolean moving;
     private boolean placementEvaluation;
+    /** When the robot is next evaluated (NaN: not due); kept by the {@link MotionStepper}. */
+    private double nextEvaluation = Double.NaN;
+    /** The box the {@link RobotIndex} filed the robot under: x0, y0, x1, y1. */
+    private final double[] indexBox = new double[4];
+    private boolean indexed;
     /** Contact sensors another robot ran into while this one stood still, pressed at {@link #touchTime}. */
     private final List<RsBodyContactSensor> touched = new ArrayList<>();
     private String touchedBy;
@@ -81,6 +86,11 @@ public final class Robot {
         return reach;
     }
 
+    /** How far from the body origin the range and target sensors reach, metres (0 without any). */
+    double sensorReach() {
+        return sensorReach;
+    }
+
     /** Whether the robot has range or target sensors, which other robots can affect. */
     boolean hasWallSensors() {
         return sensorReach > 0.0;
@@ -88,13 +98,47 @@ public final class Robot {
 
     /**
      * Whether this robot's range or target sensors could see {@code other} (or be blocked by it) at
-     * their current poses: some of it is within the sensors' reach.
+     * {@code time}: some of it is within the sensors' reach.
      */
-    boolean canSee(Robot other) {
-        RsTransform a = pose();
-        RsTransform b = other.pose();
+    boolean canSee(Robot other, double time) {
+        RsTransform a = poseAt(time);
+        RsTransform b = other.poseAt(time);
         double d = Math.hypot(a.m13 - b.m13, a.m23 - b.m23);
         return d <= sensorReach + other.shapes.reach() + 1.0e-9;
+    }
+
+    /** The pose at {@code time} under the current motion (identity before the first placement). */
+    RsTransform poseAt(double time) {
+        RsMotion m = body.getMotion();
+        return m == null ? new RsTransform() : m.getPoseAtTime(time);
+    }
+
+    double nextEvaluation() {
+        return nextEvaluation;
+    }
+
+    boolean isDue() {
+        return !Double.isNaN(nextEvaluation);
+    }
+
+    void setNextEvaluation(double time) {
+        nextEvaluation = time;
+    }
+
+    void clearNextEvaluation() {
+        nextEvaluation = Double.NaN;
+    }
+
+    double[] indexBox() {
+        return indexBox;
+    }
+
+    boolean isIndexed() {
+        return indexed;
+    }
+
+    void setIndexed(boolean indexed) {
+        this.indexed = indexed;
     }
 
     /** The order in which the robot joined the world, from 1. */
@@ -164,6 +208,11 @@ public final class Robot {
 
     boolean hasPendingRequest() {
         return pending != null;
+    }
+
+    /** The motion request waiting to start, or null. */
+    RsMotionRequest pendingRequest() {
+        return pending;
     }
 
     /** Puts the robot at a pose with a fresh motion history; its sensors are evaluated next. */
@@ -354,9 +403,9 @@ public final class Robot {
         }
     }
 
-    /** The robot's shapes at its current pose, as walls other robots collide with and sense. */
-    RsWall[] asObstacles() {
-        return shapes.asWalls(pose(), label);
+    /** The robot's shapes at {@code time}, as walls other robots sense and are placed against. */
+    RsWall[] obstaclesAt(double time) {
+        return shapes.asWalls(poseAt(time), label);
     }
 
     @Override

@@ -6,23 +6,23 @@ import java.util.List;
 import rp1.rossum.RsBodyContactSensor;
 import rp1.rossum.RsBodySensor;
 import rp1.rossum.RsMotion;
-import rp1.rossum.RsRectangle;
-import rp1.rossum.RsSegment;
 import rp1.rossum.RsTransform;
 
 /**
  * Robots meeting robots (beyond RP1 0.60, where robots passed through each other). Walls are known in
  * advance, so a motion is cut before the first wall analytically when it starts; other robots move,
- * so at every motion step the coming interval is searched for the first time two robots touch. Both
- * poses are analytic, so the search samples the interval finely enough that neither body can pass
- * through the other between samples (robots are bodies of at least a few centimetres), then narrows
- * the contact down by bisection. Each robot that was moving stops at the last whole millisecond
- * before contact, its motion marked as ended by collision; the contact sensors of either robot that
- * touch the other at the moment of contact go hot with its name.
+ * so at every motion step the coming interval is searched for the first time two robots touch. Only
+ * pairs that can meet in the interval are looked at ({@link RobotIndex}). Both poses are analytic:
+ * while two robots are far apart the search advances by the time they need at least to close the gap
+ * (their distance over their speeds), then samples finely enough that neither body can pass through
+ * the other between samples (robots are bodies of at least a few centimetres), then narrows the
+ * contact down by bisection. Each robot that was moving stops at the last whole millisecond before
+ * contact, its motion marked as ended by collision; the contact sensors of either robot that touch the
+ * other at the moment of contact go hot with its name.
  */
 final class RobotContacts {
     /** Largest relative displacement between samples, metres. */
-    private static final double SAMPLE_SPACING = 0.005;
+    static final double SAMPLE_SPACING = 0.005;
     /**
      * How far past the next evaluation the search looks, seconds: a contact just after it would
      * otherwise be found one step late, when the robot can no longer stop a millisecond before it.
@@ -40,42 +40,63 @@ final class RobotContacts {
     private RobotContacts() {
     }
 
-    /** Searches [from, to] for contacts between moving robots and every other placed robot. */
-    static void resolve(List<Robot> placed, double from, double to) {
-        int n = placed.size();
-        // Each robot's swept box once, not once per pair: the pair test is then a box overlap.
-        RsRectangle[] boxes = new RsRectangle[n];
-        for (int i = 0; i < n; i++) {
-            Robot r = placed.get(i);
-            boxes[i] = r.shapes().isEmpty() ? null : swept(r, from, to);
-        }
-        for (int i = 0; i < n; i++) {
-            Robot a = placed.get(i);
-            for (int j = i + 1; j < n; j++) {
-                Robot b = placed.get(j);
-                if ((a.isMoving() || b.isMoving()) && boxes[i] != null && boxes[j] != null
-                        && boxes[i].intersects(boxes[j])) {
-                    resolvePair(a, b, from, to);
+    /**
+     * Searches [from, to] for contacts between each moving robot of {@code evaluated} (the robots
+     * evaluated now, in joining order) and the robots near it, pair by pair in joining order. A moving
+     * robot is evaluated every interval and searches the interval after each evaluation, so its
+     * evaluations cover all the time it moves: a pair of moving robots is searched by the one that
+     * joined first, not again by the other. A robot stopped here, or run into while at rest, is due
+     * for evaluation when that happens.
+     */
+    static void resolve(List<Robot> evaluated, RobotIndex index, double from, double to, MotionStepper stepper) {
+        for (Robot a : evaluated) {
+            if (!a.isMoving() || a.shapes().isEmpty()) {
+                continue;
+            }
+            double reach = a.shapes().reach() + RobotIndex.speedBound(a) * (to - from) + SAMPLE_SPACING;
+            RsTransform p = a.poseAt(from);
+            for (Robot b : index.near(p.m13 - reach, p.m23 - reach, p.m13 + reach, p.m23 + reach)) {
+                if (b == a || (b.isMoving() && b.getNumber() < a.getNumber())) {
+                    continue;
                 }
+                boolean aFirst = a.getNumber() < b.getNumber();
+                resolvePair(aFirst ? a : b, aFirst ? b : a, from, to, stepper);
             }
         }
     }
 
-    private static void resolvePair(Robot a, Robot b, double from, double to) {
-        double speed = speedBound(a) + speedBound(b);
+    private static void resolvePair(Robot a, Robot b, double from, double to, MotionStepper stepper) {
+        double speed = RobotIndex.speedBound(a) + RobotIndex.speedBound(b);
         if (speed <= 0.0) {
             return;
         }
-        double step = SAMPLE_SPACING / speed;
-        double clear = from;
-        if (touch(a, b, from)) {
-            stop(a, b, from, from);
+        double gap = gap(a, b, from);
+        if (gap == 0.0) {
+            stop(a, b, from, from, stepper);
             return;
         }
-        for (double t = Math.min(to, from + step); ; t = Math.min(to, t + step)) {
+        double clear = from;
+        double t = from;
+        while (gap > SAMPLE_SPACING) {
+            // They cannot touch before closing the gap at their highest speed: jump to then.
+            t += gap / speed;
+            if (t >= to) {
+                return;
+            }
+            gap = gap(a, b, t);
+            if (gap > 0.0) {
+                clear = t;
+            }
+        }
+        if (gap == 0.0) {
+            stop(a, b, narrow(a, b, clear, t), from, stepper);
+            return;
+        }
+        double step = SAMPLE_SPACING / speed;
+        for (t = Math.min(to, clear + step); ; t = Math.min(to, t + step)) {
             if (touch(a, b, t)) {
                 double contact = narrow(a, b, clear, t);
-                stop(a, b, contact, from);
+                stop(a, b, contact, from, stepper);
                 return;
             }
             clear = t;
@@ -83,6 +104,20 @@ final class RobotContacts {
                 return;
             }
         }
+    }
+
+    /**
+     * A lower bound of the distance between the two robots' shapes at time {@code t}: the gap between
+     * the circles of their reach while that is wide, else the exact distance of their outlines.
+     */
+    private static double gap(Robot a, Robot b, double t) {
+        RsTransform pa = a.motion().getPoseAtTime(t);
+        RsTransform pb = b.motion().getPoseAtTime(t);
+        double circles = Math.hypot(pa.m13 - pb.m13, pa.m23 - pb.m23) - a.shapes().reach() - b.shapes().reach();
+        if (circles > SAMPLE_SPACING) {
+            return circles;
+        }
+        return a.shapes().outlinesAt(pa).distance(b.shapes().outlinesAt(pb));
     }
 
     /** The first touching time in (clear, touching], to {@link #PRECISION}. */
@@ -99,28 +134,11 @@ final class RobotContacts {
     }
 
     private static boolean touch(Robot a, Robot b, double t) {
-        return RobotShapes.overlap(edgesAt(a, t), edgesAt(b, t));
+        return outlinesAt(a, t).overlaps(outlinesAt(b, t));
     }
 
-    private static RsSegment[][] edgesAt(Robot r, double t) {
-        return r.shapes().edgesAt(r.motion().getPoseAtTime(t));
-    }
-
-    /** Upper bound of the speed of any point of the robot's shapes under its current motion. */
-    private static double speedBound(Robot r) {
-        RsMotion m = r.motion();
-        if (!r.isMoving() || m == null) {
-            return 0.0;
-        }
-        return Math.abs(m.getVelocity()) + Math.abs(m.getTurnRate()) * r.shapes().reach();
-    }
-
-    /** A box holding the robot's shapes throughout [from, to]. */
-    private static RsRectangle swept(Robot r, double from, double to) {
-        RsRectangle box = RobotShapes.bounds(edgesAt(r, from));
-        double grow = speedBound(r) * (to - from) + SAMPLE_SPACING;
-        box.setBounds(box.x - grow, box.y - grow, box.width + 2 * grow, box.height + 2 * grow);
-        return box;
+    private static Outlines outlinesAt(Robot r, double t) {
+        return r.shapes().outlinesAt(r.motion().getPoseAtTime(t));
     }
 
     /**
@@ -128,13 +146,13 @@ final class RobotContacts {
      * sensors of both that touch the other robot go hot with its name: a stopped robot's when its
      * motion ends, a robot at rest's at the time the other one stops.
      */
-    private static void stop(Robot a, Robot b, double contact, double now) {
+    private static void stop(Robot a, Robot b, double contact, double now, MotionStepper stepper) {
         List<RsBodyContactSensor> touchingA = touching(a, b, contact);
         List<RsBodyContactSensor> touchingB = touching(b, a, contact);
         double stopA = stopOne(a, contact, now);
         double stopB = stopOne(b, contact, now);
-        press(a, b, touchingA, stopA, stopB);
-        press(b, a, touchingB, stopB, stopA);
+        press(a, b, touchingA, stopA, stopB, stepper);
+        press(b, a, touchingB, stopB, stopA, stepper);
     }
 
     /** Cuts the robot's motion before the contact; returns the stop time, or NaN if it was not moving into it. */
@@ -156,13 +174,15 @@ final class RobotContacts {
 
     /** The robot's contact sensors that touch the other robot at the moment of contact (both motions as requested). */
     private static List<RsBodyContactSensor> touching(Robot r, Robot other, double contact) {
-        RsSegment[][] otherEdges = edgesAt(other, contact);
+        Outlines otherShapes = outlinesAt(other, contact);
         RsTransform pose = r.motion().getPoseAtTime(contact);
         List<RsBodyContactSensor> touching = new ArrayList<>();
         for (RsBodySensor s : r.getBody().getBodySensorArray()) {
-            if (s instanceof RsBodyContactSensor
-                    && RobotShapes.distance(outlineAt((RsBodyContactSensor) s, pose), otherEdges) <= TOUCHING) {
-                touching.add((RsBodyContactSensor) s);
+            if (s instanceof RsBodyContactSensor) {
+                Outlines sensor = Outlines.at(new double[][] {((RsBodyContactSensor) s).getOutlineVertices()}, pose);
+                if (sensor.distance(otherShapes) <= TOUCHING) {
+                    touching.add((RsBodyContactSensor) s);
+                }
             }
         }
         return touching;
@@ -172,8 +192,10 @@ final class RobotContacts {
      * A robot that was stopped has exactly its touching sensors flagged, to go hot when its motion ends;
      * one at rest has them pressed when the other robot has stopped.
      */
-    private static void press(Robot r, Robot other, List<RsBodyContactSensor> touching, double ownStop, double otherStop) {
+    private static void press(Robot r, Robot other, List<RsBodyContactSensor> touching, double ownStop, double otherStop,
+                              MotionStepper stepper) {
         if (!Double.isNaN(ownStop)) {
+            stepper.evaluateBy(r, ownStop);
             for (RsBodySensor s : r.getBody().getBodySensorArray()) {
                 if (s instanceof RsBodyContactSensor) {
                     boolean touches = touching.contains(s);
@@ -182,16 +204,7 @@ final class RobotContacts {
             }
         } else if (!touching.isEmpty() && !Double.isNaN(otherStop)) {
             r.touchedAt(otherStop, touching, other.getLabel());
+            stepper.evaluateBy(r, otherStop);
         }
-    }
-
-    private static RsSegment[] outlineAt(RsBodyContactSensor c, RsTransform pose) {
-        RsSegment[] ref = c.getSegmentArray();
-        RsSegment[] out = new RsSegment[ref.length];
-        for (int i = 0; i < ref.length; i++) {
-            out[i] = new RsSegment();
-            pose.map2(ref[i], out[i]);
-        }
-        return out;
     }
 }

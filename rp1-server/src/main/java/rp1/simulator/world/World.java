@@ -33,9 +33,16 @@ import rp1.simulator.scheduler.Scheduler;
 public final class World {
     /** Random poses ("$random") are drawn this many times before the placement fails. */
     static final int RANDOM_PLACEMENT_ATTEMPTS = 50;
+    /** Margin, metres, around a robot's reach when looking for what it could touch (beyond the 1e-4 m of the clear test). */
+    private static final double NEAR = 0.01;
+    /** Below this turn rate, rad/s, a motion is a straight line (docs/behavior.md section 5.2). */
+    private static final double STRAIGHT = 0.0017453;
+    private static final RsWall[] NO_WALLS = new RsWall[0];
 
     private final RsPlan plan;
     private final RsWall[] walls;
+    private final WallIndex wallIndex;
+    private final RobotIndex robotIndex;
     private final Random random;
     private final MotionStepper stepper;
     private final List<Robot> robots = new CopyOnWriteArrayList<>();
@@ -56,6 +63,8 @@ public final class World {
     public World(RsPlan plan, Scheduler scheduler, double interval, Random random, boolean robotsInteract) {
         this.plan = plan;
         this.walls = plan.getWallArray();
+        this.wallIndex = new WallIndex(walls);
+        this.robotIndex = new RobotIndex(plan.getBounds());
         this.random = random;
         this.robotsInteract = robotsInteract;
         this.stepper = new MotionStepper(this, scheduler, interval);
@@ -89,9 +98,11 @@ public final class World {
         if (placed) {
             r.markPlaced();
             placedCount++;
+            robotIndex.put(r, r.motion().time, 0.0);
         } else {
             r.markUnplaced();
             placedCount--;
+            robotIndex.remove(r);
         }
         placementListener.accept(placedCount);
     }
@@ -142,9 +153,7 @@ public final class World {
             departedTrails.addAll(r.getTrails());
         }
         setPlaced(r, false);
-        if (robots.isEmpty()) {
-            stepper.cancel();
-        }
+        stepper.forget(r);
         changed(Double.NaN);
     }
 
@@ -154,7 +163,7 @@ public final class World {
             return;
         }
         r.setPendingRequest(request);
-        stepper.wake(time);
+        stepper.wake(r, time);
     }
 
     /** A halt request: the waiting request is dropped and a motion under way stops now. */
@@ -175,7 +184,7 @@ public final class World {
         if (event.valid) {
             r.place(time, event.x, event.y, event.orientation);
             setPlaced(r, true);
-            stepper.wake(time);
+            stepper.evaluateBy(r, time);
         } else {
             setPlaced(r, false);
         }
@@ -187,16 +196,15 @@ public final class World {
         if (plan.getObjectCount() == 0) {
             return invalid(time, "");
         }
-        RsWall[] obstacles = placementObstacles(r);
         if (requested.equals("$random")) {
-            return randomPose(r, obstacles, time);
+            return randomPose(r, time);
         }
         if (requested.isEmpty()) {
-            return randomPlacement(r, obstacles, time);
+            return randomPlacement(r, time);
         }
         for (RsPlacement p : plan.getPlacementArray()) {
             if (p.getName().equals(requested)) {
-                return clear(r, obstacles, p.x, p.y, p.orientation)
+                return clear(r, p.x, p.y, p.orientation, time)
                         ? new RsPlacementEvent(time, true, p.getName(), p.x, p.y, p.orientation)
                         : invalid(time, requested);
             }
@@ -204,25 +212,25 @@ public final class World {
         return invalid(time, requested);
     }
 
-    private RsPlacementEvent randomPose(Robot r, RsWall[] obstacles, double time) {
+    private RsPlacementEvent randomPose(Robot r, double time) {
         RsRectangle b = plan.getBounds();
         for (int i = 0; i < RANDOM_PLACEMENT_ATTEMPTS; i++) {
             double x = b.x + random.nextDouble() * b.width;
             double y = b.y + random.nextDouble() * b.height;
             double theta = random.nextDouble() * 2.0 * Math.PI;
-            if (clear(r, obstacles, x, y, theta)) {
+            if (clear(r, x, y, theta, time)) {
                 return new RsPlacementEvent(time, true, "$random", x, y, theta);
             }
         }
         return invalid(time, "$random");
     }
 
-    private RsPlacementEvent randomPlacement(Robot r, RsWall[] obstacles, double time) {
+    private RsPlacementEvent randomPlacement(Robot r, double time) {
         List<RsPlacement> candidates = new ArrayList<>();
         Collections.addAll(candidates, plan.getPlacementArray());
         while (!candidates.isEmpty()) {
             RsPlacement p = candidates.remove(random.nextInt(candidates.size()));
-            if (clear(r, obstacles, p.x, p.y, p.orientation)) {
+            if (clear(r, p.x, p.y, p.orientation, time)) {
                 return new RsPlacementEvent(time, true, p.getName(), p.x, p.y, p.orientation);
             }
         }
@@ -233,41 +241,108 @@ public final class World {
         return new RsPlacementEvent(time, false, name, 0.0, 0.0, 0.0);
     }
 
-    private static boolean clear(Robot r, RsWall[] obstacles, double x, double y, double theta) {
+    /**
+     * Whether the robot can stand at (x, y, theta): no wall, and (if robots interact) no other robot on
+     * the floor, overlaps or comes within 1e-4 m of it. Only what is near the pose is looked at.
+     */
+    private boolean clear(Robot r, double x, double y, double theta, double time) {
+        if (r.shapes().isEmpty()) {
+            return true;
+        }
+        double reach = r.shapes().reach() + NEAR;
+        RsWall[] nearWalls = wallIndex.near(x - reach, y - reach, x + reach, y + reach);
+        RsWall[] obstacles = robotsInteract ? withRobots(nearWalls, robotsNear(r, x, y, reach, time), time) : nearWalls;
         return !r.getBody().checkForOverlap(obstacles, new RsTransform(theta, x, y));
     }
 
-    /** Walls plus every other robot on the floor (if robots interact). */
-    private RsWall[] placementObstacles(Robot r) {
-        return robotsInteract ? withRobots(r, getPlacedRobots()) : walls;
+    /** The other robots on the floor whose reach comes within {@code reach} of (x, y), in joining order. */
+    private List<Robot> robotsNear(Robot self, double x, double y, double reach, double time) {
+        List<Robot> near = new ArrayList<>();
+        for (Robot o : robotIndex.near(x - reach, y - reach, x + reach, y + reach)) {
+            if (o != self && o.isPlaced()) {
+                RsTransform p = o.poseAt(time);
+                if (Math.hypot(p.m13 - x, p.m23 - y) <= reach + o.shapes().reach()) {
+                    near.add(o);
+                }
+            }
+        }
+        return near;
     }
 
     /**
-     * What blocks the robot's range and target sensors: the walls, plus the other robots on the floor
-     * within the sensors' reach.
+     * At a motion evaluation: searches the coming interval [from, to] for contacts between the robots
+     * evaluated and the robots near them (if robots interact).
      */
-    RsWall[] obstaclesFor(Robot r, List<Robot> placed) {
-        if (!robotsInteract || !r.hasWallSensors() || placed.size() < 2) {
-            return walls;
+    void searchContacts(List<Robot> evaluated, double from, double to) {
+        if (robotsInteract && placedCount > 1) {
+            RobotContacts.resolve(evaluated, robotIndex, from, to, stepper);
         }
-        // Only robots within the sensors' reach can change a reading; with many robots, looking at
-        // all of them from every robot at every step made the world quadratic.
+    }
+
+    /** Files an evaluated robot in the index where it can be until it is evaluated again (and an interval more). */
+    void indexRobot(Robot r, double time, double interval) {
+        if (r.isPlaced()) {
+            robotIndex.put(r, time, r.isMoving() ? 2 * interval + RobotContacts.LOOK_AHEAD : 0.0);
+        }
+    }
+
+    /**
+     * What blocks the robot's range and target sensors at {@code time}: the walls within the sensors'
+     * reach, plus the other robots on the floor within it. A robot without such sensors needs none.
+     */
+    RsWall[] obstaclesFor(Robot r, double time) {
+        if (!r.hasWallSensors()) {
+            return NO_WALLS;
+        }
+        RsTransform p = r.pose();
+        double reach = r.sensorReach();
+        double x0 = p.m13 - reach;
+        double y0 = p.m23 - reach;
+        double x1 = p.m13 + reach;
+        double y1 = p.m23 + reach;
+        RsWall[] nearWalls = wallIndex.near(x0, y0, x1, y1);
+        if (!robotsInteract || placedCount < 2) {
+            return nearWalls;
+        }
         List<Robot> seen = new ArrayList<>();
-        for (Robot o : placed) {
-            if (o != r && r.canSee(o)) {
+        for (Robot o : robotIndex.near(x0, y0, x1, y1)) {
+            if (o != r && o.isPlaced() && r.canSee(o, time)) {
                 seen.add(o);
             }
         }
-        return seen.isEmpty() ? walls : withRobots(r, seen);
+        return seen.isEmpty() ? nearWalls : withRobots(nearWalls, seen, time);
     }
 
-    private RsWall[] withRobots(Robot self, List<Robot> others) {
+    /**
+     * The walls a motion requested from the robot's current pose could meet (docs/behavior.md section
+     * 5.2): along the line it would drive, or within the circle of an arc; none for a null motion.
+     */
+    RsWall[] wallsForMotion(Robot r, RsMotionRequest q) {
+        double v = q.linearVelocity;
+        double w = q.rotationalVelocity;
+        if (q.duration < 0.0001 || (Math.abs(v) < 0.0001 && Math.abs(w) < 0.0001)) {
+            return NO_WALLS;
+        }
+        RsTransform p = r.pose();
+        double theta = p.getTheta();
+        double reach = r.shapes().reach() + NEAR;
+        if (Math.abs(w) < STRAIGHT) {
+            double d = Math.abs(v * q.duration);
+            double heading = v < 0 ? theta + Math.PI : theta;
+            return wallIndex.alongSegment(p.m13, p.m23, p.m13 + d * Math.cos(heading), p.m23 + d * Math.sin(heading), reach);
+        }
+        double rho = Math.abs(v / w) * Math.signum(w);
+        double cx = p.m13 - rho * Math.sin(theta);
+        double cy = p.m23 + rho * Math.cos(theta);
+        double radius = Math.abs(rho) + reach;
+        return wallIndex.near(cx - radius, cy - radius, cx + radius, cy + radius);
+    }
+
+    private static RsWall[] withRobots(RsWall[] walls, List<Robot> others, double time) {
         List<RsWall> all = new ArrayList<>(walls.length + 4 * others.size());
         Collections.addAll(all, walls);
         for (Robot o : others) {
-            if (o != self && o.isPlaced()) {
-                Collections.addAll(all, o.asObstacles());
-            }
+            Collections.addAll(all, o.obstaclesAt(time));
         }
         return all.toArray(new RsWall[0]);
     }

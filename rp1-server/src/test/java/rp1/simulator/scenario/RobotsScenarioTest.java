@@ -40,6 +40,28 @@ class RobotsScenarioTest {
     }
 
     @Test
+    void robotsOnDifferentEvaluationGridsStillMeet() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient a = s.connect(new ScenarioClient(Bodies.round("a")));
+            ScenarioClient b = s.connect(new ScenarioClient(Bodies.round("b")));
+            a.once(RsPlacementEvent.class, e -> a.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 10.0)));
+            b.once(RsPlacementEvent.class, e -> b.sendTimeoutRequest(0.025));
+            b.once(rp1.rossum.event.RsTimeoutEvent.class, e -> b.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 10.0)));
+            a.sendPlacementRequest("west");
+            b.sendPlacementRequest("east");
+            RsMotionHaltedEvent ha = a.await(RsMotionHaltedEvent.class);
+            RsMotionHaltedEvent hb = b.await(RsMotionHaltedEvent.class);
+            // b sets off 25 ms after a, half a step out of a's grid: fronts 7.7 m apart, contact at 3.8625 s.
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, ha.causeOfHalt);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, hb.causeOfHalt);
+            assertEquals(3.862, ha.simTime, 1e-9);
+            assertEquals(3.862, hb.simTime, 1e-9);
+            double gap = hb.x - ha.x - 0.3;
+            assertTrue(gap > 0 && gap < 0.0025, "2 mm apart: " + gap);
+        }
+    }
+
+    @Test
     void aRobotDrivingIntoAParkedRobotStopsAndTheParkedOneHearsNothing() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient parked = s.connect(new ScenarioClient(Bodies.round("parked")));

@@ -1,0 +1,72 @@
+package rp1.bench;
+
+import java.io.IOException;
+import java.util.Locale;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyCircle;
+import rp1.rossum.RsClient;
+import rp1.rossum.RsProperties;
+import rp1.simulator.launch.RunningServer;
+
+/**
+ * Whether {@code simulationSpeed} is what the simulation does: one robot over loopback TCP with a
+ * 0.1 s heartbeat and the interlock on, at speeds 10, 100, 1000 and max (the machine's limit for this
+ * client), in simulated seconds per wall second.
+ */
+final class Pacing {
+    private static final double MEASURE_SECONDS = 3.0;
+
+    private Pacing() {
+    }
+
+    static void run() throws Exception {
+        for (String speed : new String[] {"10", "100", "1000", "max"}) {
+            RunningServer server = BenchServer.start("simulationSpeed=" + speed, "interlockEnabled=true");
+            RsClient robot = null;
+            try {
+                robot = placedRobot(server.getPort());
+                Thread.sleep(300);
+                double s0 = server.getSimulation().getSimTime();
+                long t0 = System.nanoTime();
+                Thread.sleep((long) (MEASURE_SECONDS * 1000));
+                double rate = (server.getSimulation().getSimTime() - s0) / ((System.nanoTime() - t0) * 1e-9);
+                String asked = speed.equals("max") ? "as fast as it goes" : String.format(Locale.ROOT, "%.0f%% of %s",
+                        100.0 * rate / Double.parseDouble(speed), speed);
+                System.out.printf(Locale.ROOT, "simulationSpeed=%-4s one TCP robot, 0.1 s heartbeat, interlock: "
+                        + "%,9.1f simulated s per wall s (%s)%n", speed, rate, asked);
+            } finally {
+                if (robot != null) {
+                    robot.sendHeartbeatCancellationRequest();
+                }
+                server.stop();
+            }
+        }
+    }
+
+    private static RsClient placedRobot(int port) throws IOException, InterruptedException {
+        RsClient c = new RsClient();
+        c.setLogger(null);
+        RsProperties p = new RsProperties();
+        p.hostName = "127.0.0.1";
+        p.port = port;
+        c.initialize(p);
+        RsBody body = new RsBody("paced");
+        body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
+        c.sendBodySpecification(body);
+        CountDownLatch placed = new CountDownLatch(1);
+        c.addPlacementEventHandler(e -> placed.countDown());
+        c.addHeartbeatEventHandler(e -> { });
+        Thread loop = new Thread(c, "paced robot");
+        loop.setDaemon(true);
+        loop.start();
+        c.sendHeartbeatRequest(0.1);
+        c.sendPlacementRequest("home");
+        if (!placed.await(10, TimeUnit.SECONDS)) {
+            throw new IOException("the robot was not placed within 10 s");
+        }
+        return c;
+    }
+}

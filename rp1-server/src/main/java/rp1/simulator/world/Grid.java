@@ -1,0 +1,164 @@
+package rp1.simulator.world;
+
+import java.util.Arrays;
+
+import rp1.rossum.RsRectangle;
+
+/**
+ * A uniform grid of square cells over an area, each cell listing the items (numbered 0..n-1) whose
+ * bounding boxes overlap it, so that "what is near this box" costs about the items near it rather than
+ * all of them. Items and queries outside the area are clamped to its border cells: still correct, only
+ * less selective. A query reports each item once, in ascending item order within a cell sweep; callers
+ * that need a deterministic order sort or use the item numbers.
+ */
+final class Grid {
+    private final double minX;
+    private final double minY;
+    private final double cell;
+    private final int cols;
+    private final int rows;
+    private final int[][] cells;
+    private final int[] counts;
+    private int[] marks = new int[16];
+    private int stamp;
+
+    /** A grid over {@code area} with cells of {@code cellSize} metres (at most {@code maxCells} cells in all). */
+    Grid(RsRectangle area, double cellSize, int maxCells) {
+        double width = Math.max(area.width, 1e-6);
+        double height = Math.max(area.height, 1e-6);
+        double size = Math.max(cellSize, Math.sqrt(width * height / maxCells));
+        this.minX = area.x;
+        this.minY = area.y;
+        this.cell = size;
+        this.cols = Math.max(1, (int) Math.ceil(width / size));
+        this.rows = Math.max(1, (int) Math.ceil(height / size));
+        this.cells = new int[cols * rows][];
+        this.counts = new int[cols * rows];
+    }
+
+    private int col(double x) {
+        return Math.max(0, Math.min(cols - 1, (int) Math.floor((x - minX) / cell)));
+    }
+
+    private int row(double y) {
+        return Math.max(0, Math.min(rows - 1, (int) Math.floor((y - minY) / cell)));
+    }
+
+    /** Adds item {@code id} over the box [x0, x1] x [y0, y1]. */
+    void insert(int id, double x0, double y0, double x1, double y1) {
+        int c0 = col(x0);
+        int c1 = col(x1);
+        int r0 = row(y0);
+        int r1 = row(y1);
+        for (int r = r0; r <= r1; r++) {
+            for (int c = c0; c <= c1; c++) {
+                add(r * cols + c, id);
+            }
+        }
+        if (id >= marks.length) {
+            marks = Arrays.copyOf(marks, Math.max(id + 1, marks.length * 2));
+        }
+    }
+
+    /** Removes item {@code id}, which was inserted over the box [x0, x1] x [y0, y1]. */
+    void remove(int id, double x0, double y0, double x1, double y1) {
+        int c0 = col(x0);
+        int c1 = col(x1);
+        int r0 = row(y0);
+        int r1 = row(y1);
+        for (int r = r0; r <= r1; r++) {
+            for (int c = c0; c <= c1; c++) {
+                int index = r * cols + c;
+                int[] list = cells[index];
+                int n = counts[index];
+                for (int i = 0; i < n; i++) {
+                    if (list[i] == id) {
+                        System.arraycopy(list, i + 1, list, i, n - i - 1);
+                        counts[index] = n - 1;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+
+    private void add(int index, int id) {
+        int[] list = cells[index];
+        int n = counts[index];
+        if (list == null || n == list.length) {
+            list = list == null ? new int[4] : Arrays.copyOf(list, n * 2);
+            cells[index] = list;
+        }
+        list[n] = id;
+        counts[index] = n + 1;
+    }
+
+    /** What a query found. */
+    @FunctionalInterface
+    interface Visitor {
+        void visit(int id);
+    }
+
+    /** Tells {@code visitor} about every item whose cells overlap the box [x0, x1] x [y0, y1], once each. */
+    void query(double x0, double y0, double x1, double y1, Visitor visitor) {
+        int mark = nextStamp();
+        int c0 = col(x0);
+        int c1 = col(x1);
+        int r0 = row(y0);
+        int r1 = row(y1);
+        for (int r = r0; r <= r1; r++) {
+            for (int c = c0; c <= c1; c++) {
+                visitCell(r * cols + c, mark, visitor);
+            }
+        }
+    }
+
+    /**
+     * Tells {@code visitor} about every item in the cells within {@code radius} of the segment from
+     * (x0, y0) to (x1, y1), once each: the items a body of that reach could meet moving along it.
+     */
+    void querySegment(double x0, double y0, double x1, double y1, double radius, Visitor visitor) {
+        int mark = nextStamp();
+        int c0 = col(Math.min(x0, x1) - radius);
+        int c1 = col(Math.max(x0, x1) + radius);
+        int r0 = row(Math.min(y0, y1) - radius);
+        int r1 = row(Math.max(y0, y1) + radius);
+        double reach = radius + cell * Math.sqrt(0.5);
+        for (int r = r0; r <= r1; r++) {
+            for (int c = c0; c <= c1; c++) {
+                double cx = minX + (c + 0.5) * cell;
+                double cy = minY + (r + 0.5) * cell;
+                if (distanceToSegment(cx, cy, x0, y0, x1, y1) <= reach) {
+                    visitCell(r * cols + c, mark, visitor);
+                }
+            }
+        }
+    }
+
+    private void visitCell(int index, int mark, Visitor visitor) {
+        int[] list = cells[index];
+        for (int i = 0, n = counts[index]; i < n; i++) {
+            int id = list[i];
+            if (marks[id] != mark) {
+                marks[id] = mark;
+                visitor.visit(id);
+            }
+        }
+    }
+
+    private int nextStamp() {
+        if (++stamp == Integer.MAX_VALUE) {
+            Arrays.fill(marks, 0);
+            stamp = 1;
+        }
+        return stamp;
+    }
+
+    private static double distanceToSegment(double px, double py, double x0, double y0, double x1, double y1) {
+        double dx = x1 - x0;
+        double dy = y1 - y0;
+        double len2 = dx * dx + dy * dy;
+        double u = len2 == 0.0 ? 0.0 : Math.max(0.0, Math.min(1.0, ((px - x0) * dx + (py - y0) * dy) / len2));
+        return Math.hypot(px - (x0 + u * dx), py - (y0 + u * dy));
+    }
+}
