@@ -8,9 +8,7 @@ import rp1.rossum.RsBody;
 import rp1.rossum.RsBodyContactSensor;
 import rp1.rossum.RsBodyPainter;
 import rp1.rossum.RsBodyPart;
-import rp1.rossum.RsBodyRangeSensor;
 import rp1.rossum.RsBodySensor;
-import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.RsMotion;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsTransform;
@@ -38,8 +36,8 @@ public final class Robot {
     private final EventSink events;
     private final RsBody body;
     private final RobotShapes shapes;
-    /** How far from the body origin the range and target sensors can see anything, metres. */
-    private final double sensorReach;
+    /** Where the range and target sensors look. */
+    private final Sight sight;
     private final String label;
     private final List<PaintTrail> trails;
     private boolean placed;
@@ -61,7 +59,7 @@ public final class Robot {
         this.body = body;
         this.events = events;
         this.shapes = new RobotShapes(body);
-        this.sensorReach = sensorReach(body);
+        this.sight = new Sight(body);
         String name = body.getName();
         this.label = name == null || name.isEmpty() ? "robot " + number : name;
         List<PaintTrail> t = new ArrayList<>();
@@ -71,40 +69,23 @@ public final class Robot {
         trails = Collections.unmodifiableList(t);
     }
 
-    /** How far from the body origin range and target sensors reach (detector offset plus range); 0 without any. */
-    private static double sensorReach(RsBody body) {
-        double reach = 0.0;
-        for (RsBodySensor s : body.getBodySensorArray()) {
-            if (s instanceof RsBodyRangeSensor) {
-                RsBodyRangeSensor r = (RsBodyRangeSensor) s;
-                reach = Math.max(reach, Math.hypot(r.getXDetector(), r.getYDetector()) + r.getMaxRange());
-            } else if (s instanceof RsBodyTargetSensor) {
-                RsBodyTargetSensor t = (RsBodyTargetSensor) s;
-                reach = Math.max(reach, Math.hypot(t.getXDetector(), t.getYDetector()) + t.getMaxRange());
-            }
-        }
-        return reach;
-    }
-
     /** How far from the body origin the range and target sensors reach, metres (0 without any). */
     double sensorReach() {
-        return sensorReach;
+        return sight.reach();
     }
 
     /** Whether the robot has range or target sensors, which other robots can affect. */
     boolean hasWallSensors() {
-        return sensorReach > 0.0;
+        return sight.reach() > 0.0;
     }
 
     /**
-     * Whether this robot's range or target sensors could see {@code other} (or be blocked by it) at
-     * {@code time}: some of it is within the sensors' reach.
+     * Whether a reading of this robot's range or target sensors, the robot at {@code pose}, could
+     * depend on {@code other} at {@code time} (see it, or be blocked by it).
      */
-    boolean canSee(Robot other, double time) {
-        RsTransform a = poseAt(time);
+    boolean mightSee(RsTransform pose, Robot other, double time) {
         RsTransform b = other.poseAt(time);
-        double d = Math.hypot(a.m13 - b.m13, a.m23 - b.m23);
-        return d <= sensorReach + other.shapes.reach() + 1.0e-9;
+        return sight.mightSee(pose, b.m13, b.m23, other.shapes.reach() + 1.0e-9);
     }
 
     /** The pose at {@code time} under the current motion (identity before the first placement). */

@@ -306,7 +306,7 @@ public final class World {
         }
         List<Robot> seen = new ArrayList<>();
         for (Robot o : robotIndex.near(x0, y0, x1, y1)) {
-            if (o != r && o.isPlaced() && r.canSee(o, time)) {
+            if (o != r && o.isPlaced() && r.mightSee(p, o, time)) {
                 seen.add(o);
             }
         }

@@ -1,0 +1,84 @@
+package rp1.simulator.world;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyRangeSensor;
+import rp1.rossum.RsBodySensor;
+import rp1.rossum.RsBodyTargetSensor;
+import rp1.rossum.RsTransform;
+
+/**
+ * Where a robot's range and target sensors can look (docs/behavior.md sections 8.2 and 8.3): each
+ * range sensor along one ray, each target sensor anywhere within its range. It decides which other
+ * robots a reading could depend on, so that a robot in a crowd turns only those into obstacles.
+ */
+final class Sight {
+    /** Per range sensor: detector x, detector y, sight angle, maximum range. */
+    private final double[][] rays;
+    /** Per target sensor: detector x, detector y, maximum range. */
+    private final double[][] fields;
+    private final double reach;
+
+    Sight(RsBody body) {
+        List<double[]> r = new ArrayList<>();
+        List<double[]> f = new ArrayList<>();
+        double max = 0.0;
+        for (RsBodySensor s : body.getBodySensorArray()) {
+            if (s instanceof RsBodyRangeSensor) {
+                RsBodyRangeSensor g = (RsBodyRangeSensor) s;
+                r.add(new double[] {g.getXDetector(), g.getYDetector(), g.getSightAngle(), g.getMaxRange()});
+                max = Math.max(max, Math.hypot(g.getXDetector(), g.getYDetector()) + g.getMaxRange());
+            } else if (s instanceof RsBodyTargetSensor) {
+                RsBodyTargetSensor t = (RsBodyTargetSensor) s;
+                f.add(new double[] {t.getXDetector(), t.getYDetector(), t.getMaxRange()});
+                max = Math.max(max, Math.hypot(t.getXDetector(), t.getYDetector()) + t.getMaxRange());
+            }
+        }
+        rays = r.toArray(new double[0][]);
+        fields = f.toArray(new double[0][]);
+        reach = max;
+    }
+
+    /** How far from the body origin the sensors reach, metres (0 without any). */
+    double reach() {
+        return reach;
+    }
+
+    /**
+     * Whether, with the robot at {@code pose}, a reading could depend on something within
+     * {@code radius} of (x, y): its ray passes that close, or it lies within a target sensor's range.
+     */
+    boolean mightSee(RsTransform pose, double x, double y, double radius) {
+        double theta = pose.getTheta();
+        for (double[] ray : rays) {
+            double dx = pose.m11 * ray[0] + pose.m12 * ray[1] + pose.m13;
+            double dy = pose.m21 * ray[0] + pose.m22 * ray[1] + pose.m23;
+            double ex = dx + ray[3] * Math.cos(theta + ray[2]);
+            double ey = dy + ray[3] * Math.sin(theta + ray[2]);
+            if (squaredToSegment(x, y, dx, dy, ex, ey) <= radius * radius) {
+                return true;
+            }
+        }
+        for (double[] field : fields) {
+            double dx = pose.m11 * field[0] + pose.m12 * field[1] + pose.m13;
+            double dy = pose.m21 * field[0] + pose.m22 * field[1] + pose.m23;
+            double limit = field[2] + radius;
+            if ((x - dx) * (x - dx) + (y - dy) * (y - dy) <= limit * limit) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static double squaredToSegment(double px, double py, double x0, double y0, double x1, double y1) {
+        double sx = x1 - x0;
+        double sy = y1 - y0;
+        double len2 = sx * sx + sy * sy;
+        double u = len2 == 0.0 ? 0.0 : Math.max(0.0, Math.min(1.0, ((px - x0) * sx + (py - y0) * sy) / len2));
+        double ex = px - (x0 + u * sx);
+        double ey = py - (y0 + u * sy);
+        return ex * ex + ey * ey;
+    }
+}
