@@ -53,7 +53,7 @@ final class Connecting {
     private static Joiner joinAndPlace(RsProperties p, int i) throws IOException, InterruptedException {
         CountDownLatch placed = new CountDownLatch(1);
         Joiner c = new Joiner();
-        c.setLogger(null);
+        c.setLogger(Quiet.LOG);
         c.initialize(p);
         RsBody body = new RsBody("joiner " + i);
         body.addPart(new RsBodyCircle(0.0, 0.0, 0.05));

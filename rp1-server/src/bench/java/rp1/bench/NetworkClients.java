@@ -52,7 +52,7 @@ final class NetworkClients {
 
     private static RsClient robot(int port, int i, CountDownLatch placed, AtomicLong beats) throws IOException {
         RsClient c = new RsClient();
-        c.setLogger(null);
+        c.setLogger(Quiet.LOG);
         RsProperties p = new RsProperties();
         p.hostName = "127.0.0.1";
         p.port = port;

@@ -25,7 +25,7 @@ final class Pacing {
     static void run() throws Exception {
         for (String speed : new String[] {"10", "100", "1000", "max"}) {
             RunningServer server = BenchServer.start("simulationSpeed=" + speed, "interlockEnabled=true");
-            RsClient robot = null;
+            Robot robot = null;
             try {
                 robot = placedRobot(server.getPort());
                 Thread.sleep(300);
@@ -39,16 +39,23 @@ final class Pacing {
                         + "%,9.1f simulated s per wall s (%s)%n", speed, rate, asked);
             } finally {
                 if (robot != null) {
-                    robot.sendHeartbeatCancellationRequest();
+                    robot.leave();
                 }
                 server.stop();
             }
         }
     }
 
-    private static RsClient placedRobot(int port) throws IOException, InterruptedException {
-        RsClient c = new RsClient();
-        c.setLogger(null);
+    /** A client that can end its session before the server goes. */
+    private static final class Robot extends RsClient {
+        void leave() {
+            shutdown();
+        }
+    }
+
+    private static Robot placedRobot(int port) throws IOException, InterruptedException {
+        Robot c = new Robot();
+        c.setLogger(Quiet.LOG);
         RsProperties p = new RsProperties();
         p.hostName = "127.0.0.1";
         p.port = port;

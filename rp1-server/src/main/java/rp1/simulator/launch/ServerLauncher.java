@@ -15,6 +15,7 @@ import rp1.simulator.config.ServerArguments;
 import rp1.simulator.config.ServerConfig;
 import rp1.simulator.net.ClientListener;
 import rp1.simulator.net.ClientRegistry;
+import rp1.simulator.net.WarmUp;
 
 /**
  * Starts a server from its command line ({@code -p PROPERTIES}, {@code -f PLAN}) the way
@@ -138,6 +139,7 @@ public final class ServerLauncher {
             log.log("Network client connections disabled (in response to configuration option)");
             return null;
         }
+        WarmUp.once(simulation.getWorld().getPlan());
         int port = options.port.orElse(config.port);
         try {
             ClientListener listener = ClientListener.bind(config.bindAddress, port, simulation, registry, log,
