@@ -91,15 +91,30 @@ def test_every_removal_unsubscribes_even_while_handlers_remain() -> None:
                           subscription(codes.EVT_MOUSE_CLICK, 0, False)]
 
 
-def test_unsubscribing_keeps_the_handlers_so_a_new_one_does_not_subscribe_again() -> None:
+def test_removing_every_handler_stops_the_events_and_a_new_handler_subscribes_again() -> None:
     client, sock = connected(event(rp.MouseClickEvent(1.0, 0, 1, 0.5, 0.5)))
-    clicks: List[rp.Event] = []
-    client.add_handler(rp.MouseClickEvent, clicks.append)
-    client.unsubscribe(rp.MouseClickEvent)
-    client.add_handler(rp.MouseClickEvent, print)
+    removed: List[rp.Event] = []
+    kept: List[rp.Event] = []
+    client.add_handler(rp.MouseClickEvent, removed.append)
+    client.add_handler(rp.MouseClickEvent, removed.append)
+    client.remove_handlers(rp.MouseClickEvent)
+    client.add_handler(rp.MouseClickEvent, kept.append)
     client.run()
-    assert sent(sock) == [subscription(codes.EVT_MOUSE_CLICK, 0, True), subscription(codes.EVT_MOUSE_CLICK, 0, False)]
-    assert len(clicks) == 1
+    assert sent(sock) == [subscription(codes.EVT_MOUSE_CLICK, 0, True), subscription(codes.EVT_MOUSE_CLICK, 0, False),
+                          subscription(codes.EVT_MOUSE_CLICK, 0, True)]
+    assert removed == [] and len(kept) == 1
+
+
+def test_a_handler_added_twice_is_gone_after_one_removal() -> None:
+    client, sock = connected(event(rp.TimeoutEvent(1.0, 7)))
+    removed: List[rp.Event] = []
+    kept: List[rp.Event] = []
+    client.add_handler(rp.TimeoutEvent, removed.append)
+    client.add_handler(rp.TimeoutEvent, removed.append)
+    client.add_handler(rp.TimeoutEvent, kept.append)
+    client.remove_handler(rp.TimeoutEvent, removed.append)
+    client.run()
+    assert removed == [] and len(kept) == 1
 
 
 def test_handlers_added_before_connecting_never_subscribe() -> None:

@@ -210,23 +210,25 @@ class Client:
 
     def remove_handler(self, event_type: Type[E], handler: Callable[[E], None],
                        sensor: Union[Sensor, int, None] = None) -> None:
-        """Removes the first registration of ``handler``. For simulation-generated events every
-        removal also sends an unsubscription, even if other handlers remain (as RP1 0.60 did)."""
+        """Removes every registration of ``handler`` (a handler added twice is gone after one call).
+        For simulation-generated events every removal also sends an unsubscription, even if other
+        handlers remain (as RP1 0.60 did); the next handler added then subscribes again."""
         key = self._key(event_type, sensor)
         with self._registry_lock:
             if key[0] in codes.SUBSCRIBED_EVENTS:
                 self._send_subscription(key, False)
             handlers = self._handlers.get(key, [])
-            if handler in handlers:
-                handlers.remove(handler)
+            handlers[:] = [h for h in handlers if h != handler]
 
-    def unsubscribe(self, event_type: Type[E], sensor: Union[Sensor, int, None] = None) -> None:
-        """Stops a simulation-generated event without removing its handlers (the Java library's
-        no-argument ``remove...EventHandler()``); a later handler does not subscribe again."""
+    def remove_handlers(self, event_type: Type[E], sensor: Union[Sensor, int, None] = None) -> None:
+        """Removes every handler of ``event_type`` (for sensor events, of ``sensor``), the Java
+        library's no-argument ``remove...EventHandler()``; for simulation-generated events it sends
+        the unsubscription, and the next handler added subscribes again."""
         key = self._key(event_type, sensor)
-        if key[0] not in codes.SUBSCRIBED_EVENTS:
-            raise ValueError(f"{event_type.__name__} is always sent: there is no subscription to stop")
-        self._send_subscription(key, False)
+        with self._registry_lock:
+            if key[0] in codes.SUBSCRIBED_EVENTS:
+                self._send_subscription(key, False)
+            self._handlers.pop(key, None)
 
     @staticmethod
     def _key(event_type: Type[Event], sensor: Union[Sensor, int, None]) -> Tuple[int, int]:

@@ -42,6 +42,11 @@ final class HandlerRegistry {
         }
     }
 
+    /** Removes every handler for the key (the no-argument {@code remove…EventHandler()} forms). */
+    synchronized void removeAll(int code, int index) {
+        handlers.remove(key(code, index));
+    }
+
     /** The handlers for the key, in registration order, as a snapshot. */
     synchronized List<RsEventHandler> snapshot(int code, int index) {
         List<RsEventHandler> list = handlers.get(key(code, index));

@@ -283,7 +283,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removeTimeoutEventHandler() {
-        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+        registry.removeAll(RsEvent.EVT_TIMEOUT, 0);
     }
 
     public synchronized void removeTimeoutEventHandler(RsTimeoutEventHandler h) {
@@ -295,7 +295,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removePositionEventHandler() {
-        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+        registry.removeAll(RsEvent.EVT_POSITION, 0);
     }
 
     public synchronized void removePositionEventHandler(RsPositionEventHandler h) {
@@ -307,7 +307,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removePlacementEventHandler() {
-        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+        registry.removeAll(RsEvent.EVT_PLACEMENT, 0);
     }
 
     public synchronized void removePlacementEventHandler(RsPlacementEventHandler h) {
@@ -319,7 +319,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removeTargetSelectionEventHandler() {
-        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+        registry.removeAll(RsEvent.EVT_TARGET_SELECTION, 0);
     }
 
     public synchronized void removeTargetSelectionEventHandler(RsTargetSelectionEventHandler h) {
@@ -331,7 +331,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removePlanEventHandler() {
-        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+        registry.removeAll(RsEvent.EVT_PLAN, 0);
     }
 
     public synchronized void removePlanEventHandler(RsPlanEventHandler h) {
@@ -343,7 +343,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removeHeartbeatEventHandler() {
-        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+        registry.removeAll(RsEvent.EVT_HEARTBEAT, 0);
     }
 
     public synchronized void removeHeartbeatEventHandler(RsHeartbeatEventHandler h) {
@@ -355,7 +355,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removeEncoderStatusEventHandler() {
-        // RP1 0.60's no-argument removals leave the handlers in place; kept for compatibility.
+        registry.removeAll(RsEvent.EVT_ENCODER_STATUS, 0);
     }
 
     public synchronized void removeEncoderStatusEventHandler(RsEncoderStatusEventHandler h) {
@@ -389,10 +389,16 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         registry.add(code, index, h);
     }
 
-    /** Unsubscribes on every removal; {@code h == null} (the no-argument forms) removes nothing locally. */
+    /**
+     * Unsubscribes on every removal, as RP1 0.60 does. {@code h == null} (the no-argument forms) removes
+     * every handler of the key; 0.60 removed none, so the server stopped sending while the handlers
+     * stayed and a later add never subscribed again (docs/differences.md).
+     */
     private void removeSubscribed(int code, int index, RsEventHandler h) {
         sendSubscription(code, index, false);
-        if (h != null) {
+        if (h == null) {
+            registry.removeAll(code, index);
+        } else {
             registry.remove(code, index, h);
         }
     }

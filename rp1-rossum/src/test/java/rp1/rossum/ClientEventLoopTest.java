@@ -99,10 +99,27 @@ class ClientEventLoopTest {
         assertEquals(Arrays.asList(
                 "6/0 on",
                 "6/0 off",
+                "6/0 on",
                 "1/0 off"), subscriptions,
                 "a handler added before the connection is never subscribed, later adds for that key send nothing; "
                         + "only the first handler of a key subscribes; every removal unsubscribes; the no-argument "
-                        + "removal keeps the local handlers, so the next add sends nothing");
+                        + "removal drops every handler of the key, so the next add subscribes again");
+    }
+
+    @Test
+    void theNoArgumentRemovalDropsEveryHandlerOfItsKind() throws Exception {
+        try (Link link = Link.piped(quietClient(), new RsConnection())) {
+            List<Integer> removed = new ArrayList<>();
+            Capture<Integer> added = new Capture<>();
+            link.client.addTimeoutEventHandler(e -> removed.add(e.timeoutIndex));
+            link.client.addTimeoutEventHandler(e -> removed.add(e.timeoutIndex));
+            link.client.removeTimeoutEventHandler();
+            link.client.addTimeoutEventHandler(e -> added.add(e.timeoutIndex));
+            link.startServer().startClientLoop();
+            link.connection.sendTimeoutEvent(new RsTimeoutEvent(1.0, 1));
+            assertEquals(1, added.next());
+            assertEquals(List.of(), removed, "RP1 0.60 kept these handlers (a defect: docs/differences.md)");
+        }
     }
 
     @Test
