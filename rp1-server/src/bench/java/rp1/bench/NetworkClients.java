@@ -8,10 +8,6 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
-import rp1.rossum.RsClient;
-import rp1.rossum.RsProperties;
 import rp1.simulator.launch.RunningServer;
 
 /**
@@ -27,7 +23,7 @@ final class NetworkClients {
         RunningServer server = BenchServer.start("floorPlanFileName=arena40.txt", "simulationSpeed=max",
                 "interlockEnabled=true", "waitForClients=" + clients);
         AtomicLong beats = new AtomicLong();
-        List<RsClient> robots = new ArrayList<>();
+        List<NetRobot> robots = new ArrayList<>();
         try {
             CountDownLatch placed = new CountDownLatch(clients);
             for (int i = 0; i < clients; i++) {
@@ -46,33 +42,15 @@ final class NetworkClients {
                     + " simulated s per wall s, %,.0f heartbeats/s%n", clients,
                     (server.getSimulation().getSimTime() - s0) / wall, (beats.get() - b0) / wall);
         } finally {
+            robots.forEach(NetRobot::leave);
             server.stop();
         }
     }
 
-    private static RsClient robot(int port, int i, CountDownLatch placed, AtomicLong beats) throws IOException {
-        RsClient c = new RsClient();
-        c.setLogger(Quiet.LOG);
-        RsProperties p = new RsProperties();
-        p.hostName = "127.0.0.1";
-        p.port = port;
-        c.initialize(p);
-        RsBody body = new RsBody("net " + i);
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
-        c.sendBodySpecification(body);
-        c.addPlacementEventHandler(e -> {
-            if (e.valid) {
-                placed.countDown();
-            } else {
-                c.sendPlacementRequest("$random");
-            }
-        });
+    private static NetRobot robot(int port, int i, CountDownLatch placed, AtomicLong beats) throws IOException {
+        NetRobot c = new NetRobot(port, "net " + i, 0.1, placed);
         c.addHeartbeatEventHandler(e -> beats.incrementAndGet());
-        Thread loop = new Thread(c, "net robot " + i);
-        loop.setDaemon(true);
-        loop.start();
         c.sendHeartbeatRequest(0.1);
-        c.sendPlacementRequest("$random");
-        return c;
+        return c.place("$random");
     }
 }

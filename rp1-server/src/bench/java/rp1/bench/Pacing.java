@@ -5,10 +5,6 @@ import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
-import rp1.rossum.RsClient;
-import rp1.rossum.RsProperties;
 import rp1.simulator.launch.RunningServer;
 
 /**
@@ -25,7 +21,7 @@ final class Pacing {
     static void run() throws Exception {
         for (String speed : new String[] {"10", "100", "1000", "max"}) {
             RunningServer server = BenchServer.start("simulationSpeed=" + speed, "interlockEnabled=true");
-            Robot robot = null;
+            NetRobot robot = null;
             try {
                 robot = placedRobot(server.getPort());
                 Thread.sleep(300);
@@ -46,32 +42,12 @@ final class Pacing {
         }
     }
 
-    /** A client that can end its session before the server goes. */
-    private static final class Robot extends RsClient {
-        void leave() {
-            shutdown();
-        }
-    }
-
-    private static Robot placedRobot(int port) throws IOException, InterruptedException {
-        Robot c = new Robot();
-        c.setLogger(Quiet.LOG);
-        RsProperties p = new RsProperties();
-        p.hostName = "127.0.0.1";
-        p.port = port;
-        c.initialize(p);
-        RsBody body = new RsBody("paced");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
-        c.sendBodySpecification(body);
-        CountDownLatch placed = new CountDownLatch(1);
-        c.addPlacementEventHandler(e -> placed.countDown());
+    private static NetRobot placedRobot(int port) throws IOException, InterruptedException {
+        NetRobot c = new NetRobot(port, "paced", 0.1, new CountDownLatch(1));
         c.addHeartbeatEventHandler(e -> { });
-        Thread loop = new Thread(c, "paced robot");
-        loop.setDaemon(true);
-        loop.start();
         c.sendHeartbeatRequest(0.1);
-        c.sendPlacementRequest("home");
-        if (!placed.await(10, TimeUnit.SECONDS)) {
+        c.place("home");
+        if (!c.placed().await(10, TimeUnit.SECONDS)) {
             throw new IOException("the robot was not placed within 10 s");
         }
         return c;
