@@ -128,7 +128,7 @@ final class Grid {
             for (int c = c0; c <= c1; c++) {
                 double cx = minX + (c + 0.5) * cell;
                 double cy = minY + (r + 0.5) * cell;
-                if (distanceToSegment(cx, cy, x0, y0, x1, y1) <= reach) {
+                if (Outlines.squaredToSegment(cx, cy, x0, y0, x1, y1) <= reach * reach) {
                     visitCell(r * cols + c, mark, visitor);
                 }
             }
@@ -152,13 +152,5 @@ final class Grid {
             stamp = 1;
         }
         return stamp;
-    }
-
-    private static double distanceToSegment(double px, double py, double x0, double y0, double x1, double y1) {
-        double dx = x1 - x0;
-        double dy = y1 - y0;
-        double len2 = dx * dx + dy * dy;
-        double u = len2 == 0.0 ? 0.0 : Math.max(0.0, Math.min(1.0, ((px - x0) * dx + (py - y0) * dy) / len2));
-        return Math.hypot(px - (x0 + u * dx), py - (y0 + u * dy));
     }
 }

@@ -168,7 +168,8 @@ final class Outlines {
         return best;
     }
 
-    private static double squaredToSegment(double px, double py, double x0, double y0, double x1, double y1) {
+    /** The squared distance from point (px, py) to the segment (x0, y0)-(x1, y1). */
+    static double squaredToSegment(double px, double py, double x0, double y0, double x1, double y1) {
         double dx = x1 - x0;
         double dy = y1 - y0;
         double len2 = dx * dx + dy * dy;

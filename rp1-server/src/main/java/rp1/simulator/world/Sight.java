@@ -57,7 +57,7 @@ final class Sight {
             double dy = pose.m21 * ray[0] + pose.m22 * ray[1] + pose.m23;
             double ex = dx + ray[3] * Math.cos(theta + ray[2]);
             double ey = dy + ray[3] * Math.sin(theta + ray[2]);
-            if (squaredToSegment(x, y, dx, dy, ex, ey) <= radius * radius) {
+            if (Outlines.squaredToSegment(x, y, dx, dy, ex, ey) <= radius * radius) {
                 return true;
             }
         }
@@ -70,15 +70,5 @@ final class Sight {
             }
         }
         return false;
-    }
-
-    private static double squaredToSegment(double px, double py, double x0, double y0, double x1, double y1) {
-        double sx = x1 - x0;
-        double sy = y1 - y0;
-        double len2 = sx * sx + sy * sy;
-        double u = len2 == 0.0 ? 0.0 : Math.max(0.0, Math.min(1.0, ((px - x0) * sx + (py - y0) * sy) / len2));
-        double ex = px - (x0 + u * sx);
-        double ey = py - (y0 + u * sy);
-        return ex * ex + ey * ey;
     }
 }
