@@ -1,5 +1,6 @@
 package rp1.simulator;
 
+import rp1.simulator.config.ServerConfig;
 import rp1.simulator.scheduler.SimClock;
 import rp1.simulator.scheduler.TimeSource;
 
@@ -59,6 +60,14 @@ public final class SimulationSettings {
     /** A clock paced by the system's wall clock at {@code speed}. */
     public static SimulationSettings paced(double modelingInterval, double speed, boolean interlock, long randomSeed) {
         return new SimulationSettings(modelingInterval, speed, interlock, randomSeed, TimeSource.SYSTEM);
+    }
+
+    /** What a server's properties ask for, with the random source seeded by {@code seed}. */
+    public static SimulationSettings of(ServerConfig config, long seed) {
+        SimulationSettings s = config.lockstep
+                ? lockstep(config.modelingInterval, seed)
+                : paced(config.modelingInterval, config.simulationSpeed, config.interlockEnabled, seed);
+        return s.withRobotsInteract(config.robotsInteract);
     }
 
     /**
