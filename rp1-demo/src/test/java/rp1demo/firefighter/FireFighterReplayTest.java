@@ -34,7 +34,8 @@ class FireFighterReplayTest {
     @Test
     void theFireFightersRunReplaysToTheSameEventLogAndEndPicture() throws Exception {
         String properties = new String(Files.readAllBytes(ROOT.resolve("Properties/headless.ini")), StandardCharsets.UTF_8)
-                + "\nlogToSystemOut=false\nmaxSimulationTime=30\nrecordFileName=ff.rec\neventLogFileName=ff.events\n"
+                + "\nlogToSystemOut=false\nlogToFile=true\nlogFileName=ff.log\nmaxSimulationTime=30\n"
+                + "recordFileName=ff.rec\neventLogFileName=ff.events\n"
                 + "snapshotFileName=" + dir.resolve("ff.png") + "\n";
         Files.write(dir.resolve("ff.ini"), properties.getBytes(StandardCharsets.UTF_8));
         RunningServer server = ServerLauncher.start(new String[] {"-p", "ff.ini"}, dir, LaunchOptions.defaults());
