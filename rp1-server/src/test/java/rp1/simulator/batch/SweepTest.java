@@ -86,6 +86,16 @@ class SweepTest {
     }
 
     @Test
+    void aRunThatOutlivesItsTimeoutIsStoppedAndIsARowWithItsReason() throws Exception {
+        Path p = properties("exitWhenClientsDone=true", "dlcName=" + SleepyDlc.class.getName());
+        int status = sweep("-p", p.toString(), "--seeds", "2", "--timeout", "2", "--out", dir.resolve("out").toString());
+        assertEquals(Sweep.RUN_FAILED, status, out.toString(StandardCharsets.UTF_8) + err);
+        List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
+        assertTrue(rows.get(1).startsWith("2," + dir.resolve("home.txt") + ",,,timeout: still running after 2 s of"
+                + " wall time,"), rows.get(1));
+    }
+
+    @Test
     void seedsAreRangesAndListsEachSeedOnce() {
         assertEquals(List.of(1L, 2L, 3L, 7L), SweepOptions.seeds("1-3,7,2"));
         assertThrows(IllegalArgumentException.class, () -> SweepOptions.seeds("3-1"));
