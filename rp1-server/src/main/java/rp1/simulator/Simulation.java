@@ -25,8 +25,8 @@ import rp1.simulator.world.World;
  * the inputs waiting for the next boundary, the interlock, and the client sessions. Transports attach
  * clients with {@link #attach}; a view observes the world through {@link World#addListener} and the
  * observer actions here, and reaches in only through inputs ({@link #mouseClick},
- * {@link #removePaintTrails}, which are {@link ViewAction}s); one thread runs {@link #run()} (see {@link Scheduler} for which threads
- * may also run tasks).
+ * {@link #removePaintTrails}: {@link ViewAction}s); one thread runs {@link #run()} (see
+ * {@link Scheduler} for which threads may also run tasks).
  */
 public final class Simulation {
     /** How long a transport thread may run tasks before leaving the rest to the dispatch loop. */

@@ -39,7 +39,7 @@ public final class RunRecords implements AutoCloseable {
         if (recording == null && eventLog == null) {
             return none();
         }
-        EventStream events = eventLog == null ? EventStream.counting() : open(eventLog, "event log", log);
+        EventStream events = eventLog == null ? EventStream.counting() : openEventLog(eventLog, log);
         Recorder recorder = null;
         if (recording != null) {
             try {
@@ -54,11 +54,11 @@ public final class RunRecords implements AutoCloseable {
         return new RunRecords(recorder, events, log);
     }
 
-    private static EventStream open(Path file, String what, RsLogInterface log) throws IOException {
+    private static EventStream openEventLog(Path file, RsLogInterface log) throws IOException {
         try {
             return EventStream.toFile(file, log);
         } catch (IOException e) {
-            throw new IOException("cannot create the " + what + " " + file + " (eventLogFileName): " + e.getMessage(), e);
+            throw new IOException("cannot create the event log " + file + " (eventLogFileName): " + e.getMessage(), e);
         }
     }
 
