@@ -1,6 +1,7 @@
 package rp1.simulator.record;
 
 import java.awt.Color;
+import java.util.function.Function;
 
 /**
  * Reads the fields of one recording line in order (the forms {@link TextLine} writes). Every error
@@ -53,12 +54,7 @@ final class LineCursor {
     }
 
     long integer(String what) throws RecordingException {
-        String w = word(what);
-        try {
-            return Long.parseLong(w);
-        } catch (NumberFormatException e) {
-            throw error(what + ": an integer was expected, found \"" + w + "\"");
-        }
+        return parsed(what, "an integer", Long::parseLong);
     }
 
     /** An integer in the range of an int. */
@@ -71,11 +67,16 @@ final class LineCursor {
     }
 
     double real(String what) throws RecordingException {
+        return parsed(what, "a number", Double::parseDouble);
+    }
+
+    /** The next word as {@code parse} reads it; {@code kind} says what it should have been. */
+    private <T> T parsed(String what, String kind, Function<String, T> parse) throws RecordingException {
         String w = word(what);
         try {
-            return Double.parseDouble(w);
+            return parse.apply(w);
         } catch (NumberFormatException e) {
-            throw error(what + ": a number was expected, found \"" + w + "\"");
+            throw error(what + ": " + kind + " was expected, found \"" + w + "\"");
         }
     }
 
