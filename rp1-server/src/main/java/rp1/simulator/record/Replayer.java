@@ -145,6 +145,7 @@ public final class Replayer {
     }
 
     private void apply(Recording.Step step) {
+        simulation.getScheduler().advanceTo(step.time());
         if (step.action() != null) {
             step.action().applyTo(simulation, step.time());
         } else {

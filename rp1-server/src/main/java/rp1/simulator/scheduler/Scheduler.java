@@ -214,6 +214,21 @@ public final class Scheduler {
         }
     }
 
+    /**
+     * Moves a lockstep clock on to {@code time} (never back): a replay sets the time a recorded input
+     * was applied at before applying it, as the recorded run's clock then read. Paced clocks ignore it.
+     */
+    public void advanceTo(double time) {
+        lock.lock();
+        try {
+            if (clock.isLockstep() && time > clock.getSimTime()) {
+                clock.setSimTime(time);
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** Begins the run: the clock starts at the current time (0 for a new simulation). */
     public void begin() {
         lock.lock();

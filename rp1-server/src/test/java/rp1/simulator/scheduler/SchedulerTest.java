@@ -161,6 +161,16 @@ class SchedulerTest {
     }
 
     @Test
+    void aReplayMovesTheClockOnToARecordedInputsTimeButNeverBack() {
+        Scheduler s = new Scheduler(SimClock.replay());
+        s.begin();
+        s.advanceTo(2.5);
+        assertEquals(2.5, s.now());
+        s.advanceTo(1.0);
+        assertEquals(2.5, s.now());
+    }
+
+    @Test
     void theNextTaskTimeIsAnImmediateTasksStampBeforeAnyTimedTask() {
         Scheduler s = lockstep();
         s.schedule(2.0, Scheduler.NORMAL, record("timed"));
