@@ -34,8 +34,10 @@ public final class Sweep {
     private Sweep() {
     }
 
-    /** Runs the sweep; the process exits with its status. */
+    /** Runs the sweep; the process exits with its status. Runs still going when it is stopped are stopped too. */
     public static void main(String[] args) {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> ProcessHandle.current().children()
+                .forEach(ProcessHandle::destroyForcibly), "stop the runs"));
         System.exit(run(args, System.out, System.err, System.console() != null));
     }
 

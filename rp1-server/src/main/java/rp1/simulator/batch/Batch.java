@@ -195,8 +195,15 @@ public final class Batch {
         long start = System.nanoTime();
         Process p = new ProcessBuilder(command(run)).redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
+        boolean ended;
+        try {
+            ended = p.waitFor((long) (options.timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            p.destroyForcibly();
+            throw e;
+        }
         RunReport report;
-        if (!p.waitFor((long) (options.timeoutSeconds * 1000), TimeUnit.MILLISECONDS)) {
+        if (!ended) {
             p.destroyForcibly();
             p.waitFor();
             report = RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
