@@ -19,8 +19,10 @@ import rp1.simulator.session.ClientSession;
  * give. The live run and its replay both write through here, on the thread running tasks.
  */
 public final class EventStream implements Simulation.EventListener {
+    /** The version of the event log's line format: raise it when a line changes. */
+    public static final int VERSION = 1;
     /** The first line of every event log. */
-    public static final String HEADER = "# rp1-events " + RecordingFormat.VERSION;
+    public static final String HEADER = "# rp1-events " + VERSION;
 
     private final CRC32 checksum = new CRC32();
     private final RsLogInterface log;
