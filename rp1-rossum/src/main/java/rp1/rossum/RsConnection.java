@@ -274,6 +274,26 @@ public class RsConnection extends RsProtocol implements Runnable {
         bodyReceived(body);
     }
 
+    /**
+     * Beyond RP1 0.60: a body specification's payload (what follows the message header on the wire),
+     * for storing a body outside a connection (a recording of a run).
+     *
+     * @throws IllegalArgumentException if the body has no part that can be sent, or a name is too long
+     */
+    public static byte[] encodeBodySpecification(RsBody body) {
+        return BodyCodec.encode(body);
+    }
+
+    /**
+     * Beyond RP1 0.60: reads back a payload made by {@link #encodeBodySpecification}. Every part gets
+     * the id it had in the body that was encoded; this process's part counter is not touched.
+     *
+     * @throws IOException naming the field if the bytes are malformed or cut short
+     */
+    public static RsBody decodeBodySpecification(byte[] payload) throws IOException {
+        return BodyCodec.decode(payload);
+    }
+
     /** Writes an event header and the event prefix (code, index, time, interlock), unflushed. */
     protected void writeEventHeader(RsEvent event) throws IOException {
         writeEventHeader(event.eventID, event.getIndex(), event.simTime);

@@ -9,8 +9,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import rp1.rossum.RsConnection;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsPlan;
-import rp1.rossum.event.RsMouseClickEvent;
-import rp1.simulator.scheduler.Input;
+import rp1.rossum.event.RsEvent;
 import rp1.simulator.scheduler.InputQueue;
 import rp1.simulator.scheduler.Interlock;
 import rp1.simulator.scheduler.Scheduler;
@@ -26,8 +25,8 @@ import rp1.simulator.world.World;
  * the inputs waiting for the next boundary, the interlock, and the client sessions. Transports attach
  * clients with {@link #attach}; a view observes the world through {@link World#addListener} and the
  * observer actions here, and reaches in only through inputs ({@link #mouseClick},
- * {@link #removePaintTrails}); one thread runs {@link #run()} (see {@link Scheduler} for which threads
- * may also run tasks).
+ * {@link #removePaintTrails}: {@link ViewAction}s); one thread runs {@link #run()} (see
+ * {@link Scheduler} for which threads may also run tasks).
  */
 public final class Simulation {
     /** How long a transport thread may run tasks before leaving the rest to the dispatch loop. */
@@ -59,6 +58,7 @@ public final class Simulation {
     private final List<ClientSession> sessions = new CopyOnWriteArrayList<>();
     private final AtomicInteger clientNumbers = new AtomicInteger();
     private final ClientSession.Host host;
+    private final List<EventListener> eventListeners = new CopyOnWriteArrayList<>();
     /** Robots still to be placed before the clock may run ({@code waitForClients}); 0 once it runs. */
     private int waitingFor;
 
@@ -235,32 +235,29 @@ public final class Simulation {
      * mouse clicks gets the event, stamped with the time the press is applied.
      */
     public void mouseClick(int button, int clickCount, double x, double y) {
-        inputs.submit(new ViewInput("mouse click", t -> {
-            RsMouseClickEvent e = new RsMouseClickEvent(t, button, clickCount, x, y);
-            for (ClientSession s : sessions) {
-                if (s.getRobot() != null) {
-                    s.sendIfSubscribed(e);
-                }
-            }
-        }));
+        inputs.submit(new ViewInput(new ViewAction.MouseClick(button, clickCount, x, y), this));
     }
 
     /** Clears every paint trail (the view's "Remove Paint Trails"). */
     public void removePaintTrails() {
-        inputs.submit(new ViewInput("remove paint trails", t -> world.removePaintTrails()));
+        inputs.submit(new ViewInput(new ViewAction.RemovePaintTrails(), this));
     }
 
-    /** An input from the view (source 0: applied before the clients' inputs of the same boundary). */
-    private record ViewInput(String name, Task action) implements Input {
-        @Override
-        public int source() {
-            return 0;
-        }
+    /** Told about every event the simulation produces for a client (an event log, run statistics). */
+    @FunctionalInterface
+    public interface EventListener {
+        /**
+         * On the thread running tasks, just before the event leaves for the client.
+         *
+         * @param delivered true if it is sent to the client; false for an event the model produced
+         *                  that the client has not subscribed to
+         */
+        void event(ClientSession session, RsEvent event, boolean delivered);
+    }
 
-        @Override
-        public void apply(double simTime) {
-            action.run(simTime);
-        }
+    /** Adds a listener for every event produced for the clients. */
+    public void addEventListener(EventListener listener) {
+        eventListeners.add(listener);
     }
 
     /** What the sessions work with. */
@@ -288,6 +285,13 @@ public final class Simulation {
         @Override
         public void submit(ClientSession session, Request request) {
             inputs.submit(new ClientInput(session, request));
+        }
+
+        @Override
+        public void eventOut(ClientSession session, RsEvent event, boolean delivered) {
+            for (EventListener l : eventListeners) {
+                l.event(session, event, delivered);
+            }
         }
     }
 }

@@ -1,5 +1,6 @@
 package rp1.simulator;
 
+import rp1.simulator.config.ServerConfig;
 import rp1.simulator.scheduler.SimClock;
 import rp1.simulator.scheduler.TimeSource;
 
@@ -18,14 +19,16 @@ public final class SimulationSettings {
     public final TimeSource wallClock;
     /** Whether robots collide with, sense and block the placement of one another (RP1 0.60: no). */
     public final boolean robotsInteract;
+    /** A replay of a recorded run: lockstep, and nothing holds its clock ({@link SimClock#replay()}). */
+    public final boolean replay;
 
     public SimulationSettings(double modelingInterval, double speed, boolean interlock, long randomSeed,
                               TimeSource wallClock) {
-        this(modelingInterval, speed, interlock, randomSeed, wallClock, true);
+        this(modelingInterval, speed, interlock, randomSeed, wallClock, true, false);
     }
 
     private SimulationSettings(double modelingInterval, double speed, boolean interlock, long randomSeed,
-                               TimeSource wallClock, boolean robotsInteract) {
+                               TimeSource wallClock, boolean robotsInteract, boolean replay) {
         if (!(modelingInterval > 0.0)) {
             throw new IllegalArgumentException("modelingInterval must be positive, got " + modelingInterval);
         }
@@ -38,11 +41,12 @@ public final class SimulationSettings {
         this.randomSeed = randomSeed;
         this.wallClock = wallClock;
         this.robotsInteract = robotsInteract;
+        this.replay = replay;
     }
 
     /** The same settings with robots meeting each other or not ({@code robotsInteract}). */
     public SimulationSettings withRobotsInteract(boolean interact) {
-        return new SimulationSettings(modelingInterval, speed, interlock, randomSeed, wallClock, interact);
+        return new SimulationSettings(modelingInterval, speed, interlock, randomSeed, wallClock, interact, replay);
     }
 
     /**
@@ -58,11 +62,31 @@ public final class SimulationSettings {
         return new SimulationSettings(modelingInterval, speed, interlock, randomSeed, TimeSource.SYSTEM);
     }
 
+    /** What a server's properties ask for, with the random source seeded by {@code seed}. */
+    public static SimulationSettings of(ServerConfig config, long seed) {
+        SimulationSettings s = config.lockstep
+                ? lockstep(config.modelingInterval, seed)
+                : paced(config.modelingInterval, config.simulationSpeed, config.interlockEnabled, seed);
+        return s.withRobotsInteract(config.robotsInteract);
+    }
+
+    /**
+     * For replaying a recorded run with these settings' modelling interval, seed and robot interaction:
+     * no interlock (there are no clients to wait for), and a clock nothing holds.
+     */
+    public SimulationSettings forReplay() {
+        return new SimulationSettings(modelingInterval, Double.POSITIVE_INFINITY, false, randomSeed, null,
+                robotsInteract, true);
+    }
+
     public boolean isLockstep() {
         return Double.isInfinite(speed);
     }
 
     SimClock newClock() {
+        if (replay) {
+            return SimClock.replay();
+        }
         return isLockstep() ? SimClock.lockstep() : SimClock.paced(wallClock, speed);
     }
 }

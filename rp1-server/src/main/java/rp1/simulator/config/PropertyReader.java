@@ -1,7 +1,10 @@
 package rp1.simulator.config;
 
+import java.util.Collections;
 import java.util.Locale;
 import java.util.Properties;
+import java.util.SortedMap;
+import java.util.TreeMap;
 
 import rp1.rossum.RsProperties;
 
@@ -21,6 +24,15 @@ final class PropertyReader {
 
     String source() {
         return source;
+    }
+
+    /** Every key and its value as given, sorted by key. */
+    SortedMap<String, String> given() {
+        SortedMap<String, String> all = new TreeMap<>();
+        for (String key : table.stringPropertyNames()) {
+            all.put(key, table.getProperty(key));
+        }
+        return Collections.unmodifiableSortedMap(all);
     }
 
     /** The value of the first of {@code keys} that is present (later names are accepted aliases), or null. */

@@ -6,6 +6,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.OptionalLong;
 import java.util.Properties;
+import java.util.SortedMap;
 
 /**
  * The server's settings, read from an RP1.ini-style properties file (behavior.md section 2.2, with
@@ -13,7 +14,8 @@ import java.util.Properties;
  * plus the keys this implementation adds: {@code bindAddress}, {@code simulationSpeed=max},
  * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
  * {@code clientQueueLimit}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
- * {@code waitForClients} and {@code dlcDelivery} (docs/properties.md). Immutable; built
+ * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName} and {@code eventLogFileName}
+ * (docs/properties.md). Immutable; built
  * by {@link #from}, which validates every value.
  */
 public final class ServerConfig {
@@ -65,6 +67,12 @@ public final class ServerConfig {
     public final int waitForClients;
     /** How loaded clients get their events: "auto", "direct" or "pipes". */
     public final String dlcDelivery;
+    /** Where to write a recording of the run, to replay it (docs/recording.md), or null. */
+    public final String recordFileName;
+    /** Where to write every event sent to a client, one line each (docs/recording.md), or null. */
+    public final String eventLogFileName;
+    /** The properties as given (values unparsed), sorted by key: a recording keeps them. */
+    public final SortedMap<String, String> given;
 
     private ServerConfig(PropertyReader r, String planOverride) throws ConfigException {
         port = r.integer("port", DEFAULT_PORT, 1025, 32767);
@@ -98,6 +106,9 @@ public final class ServerConfig {
         robotsInteract = r.bool(true, "robotsInteract");
         waitForClients = r.integer("waitForClients", enableNetworkClients && !dlcEnabled ? 1 : 0, 0, Integer.MAX_VALUE);
         dlcDelivery = r.choice("dlcDelivery", "auto", "auto", "direct", "pipes");
+        recordFileName = r.string("recordFileName");
+        eventLogFileName = r.string("eventLogFileName");
+        given = r.given();
         checkConsistency(r);
     }
 

@@ -10,14 +10,15 @@ import rp1.simulator.Simulation;
 import rp1.simulator.config.ServerConfig;
 import rp1.simulator.net.ClientListener;
 import rp1.simulator.net.ClientRegistry;
+import rp1.simulator.record.RunRecords;
 
 /**
  * A server that has started: its threads (scheduler, listener, a reader and a writer per client, one
  * per loaded client, behavior.md section 3.2) are running. It stops when asked ({@link #stop()},
  * Ctrl-C through {@code rp1.Server}'s shutdown hook, the view's exit), at {@code maxSimulationTime},
  * when every loaded client is done ({@code exitWhenClientsDone}), or when a loaded client fails to
- * initialize. Stopping closes every client, stops the scheduler and flushes and closes the log; the
- * exit status says how it ended ({@link ExitStatus}).
+ * initialize. Stopping closes every client, stops the scheduler, finishes the recording and event log
+ * (if any) and flushes and closes the log; the exit status says how it ended ({@link ExitStatus}).
  */
 public final class RunningServer {
     /** How long stopping waits for the scheduler to finish the task it is running. */
@@ -39,9 +40,10 @@ public final class RunningServer {
         final ClientListener listener;
         final ClientLauncher launcher;
         final ViewHook viewHook;
+        final RunRecords records;
 
         Parts(ServerConfig config, ServerLog log, Simulation simulation, ClientRegistry registry,
-              ClientListener listener, ClientLauncher launcher, ViewHook viewHook) {
+              ClientListener listener, ClientLauncher launcher, ViewHook viewHook, RunRecords records) {
             this.config = config;
             this.log = log;
             this.simulation = simulation;
@@ -49,6 +51,7 @@ public final class RunningServer {
             this.listener = listener;
             this.launcher = launcher;
             this.viewHook = viewHook;
+            this.records = records;
         }
     }
 
@@ -207,6 +210,7 @@ public final class RunningServer {
         // the picture written at exit shows the robots where the run left them.
         parts.simulation.shutdown();
         joinScheduler();
+        parts.records.close();
         closeView();
         parts.registry.closeAll("the server is shutting down");
         Runtime rt = Runtime.getRuntime();
@@ -216,12 +220,14 @@ public final class RunningServer {
         exited.countDown();
     }
 
+    /** Waits for the scheduler thread to end and for any other thread to finish the task it was running. */
     private void joinScheduler() {
-        if (Thread.currentThread() == scheduler || !scheduler.isAlive()) {
+        if (Thread.currentThread() == scheduler) {
             return;
         }
         try {
             scheduler.join(SCHEDULER_JOIN_MILLIS);
+            parts.simulation.getScheduler().awaitIdle(SCHEDULER_JOIN_MILLIS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

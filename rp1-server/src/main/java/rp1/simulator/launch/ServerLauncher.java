@@ -3,6 +3,8 @@ package rp1.simulator.launch;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.SortedMap;
+import java.util.TreeMap;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
@@ -16,6 +18,8 @@ import rp1.simulator.config.ServerConfig;
 import rp1.simulator.net.ClientListener;
 import rp1.simulator.net.ClientRegistry;
 import rp1.simulator.net.WarmUp;
+import rp1.simulator.record.Recorder;
+import rp1.simulator.record.RunRecords;
 
 /**
  * Starts a server from its command line ({@code -p PROPERTIES}, {@code -f PLAN}) the way
@@ -51,18 +55,23 @@ public final class ServerLauncher {
         ServerConfig config = configure(args, locator);
         ServerLog log = openLog(config, workingDirectory);
         ClientListener listener = null;
+        RunRecords records = RunRecords.none();
         RunningServer.Parts parts;
         try {
             log.important("STARTING SIMULATOR SESSION");
-            Simulation simulation = simulate(config, locator, log);
+            ResourceLocator.Found planText = readPlan(config, locator, log);
+            long seed = config.randomSeed.orElse(System.nanoTime());
+            Simulation simulation = simulate(config, planText, seed, log);
+            records = keepRecords(config, workingDirectory, simulation, planText, seed, log);
             ClientLauncher launcher = ClientLauncher.create(config, log, loader);
             ClientRegistry registry = new ClientRegistry(log);
             listener = listen(config, options, simulation, registry, log);
-            parts = new RunningServer.Parts(config, log, simulation, registry, listener, launcher, options.view);
+            parts = new RunningServer.Parts(config, log, simulation, registry, listener, launcher, options.view, records);
         } catch (StartupException | RuntimeException e) {
             if (listener != null) {
                 listener.close();
             }
+            records.close();
             String message = e instanceof StartupException ? e.getMessage() : LoadedClient.describe(e);
             log.important("Fatal error: " + message);
             log.close();
@@ -102,28 +111,30 @@ public final class ServerLauncher {
         }
     }
 
-    /** Reads the floor plan and creates the simulation, seeded (and the seed logged, to repeat the run). */
-    private static Simulation simulate(ServerConfig config, ResourceLocator locator, ServerLog log)
+    private static ResourceLocator.Found readPlan(ServerConfig config, ResourceLocator locator, ServerLog log)
             throws StartupException {
-        RsPlan plan;
         try {
             ResourceLocator.Found text = locator.plan(config.floorPlanFileName);
             log.log("Loading floor plan from " + text.location);
-            plan = RsPlanParser.parse(text.reader(), text.location);
+            return text;
         } catch (ConfigException e) {
             throw new StartupException(e.getMessage());
+        }
+    }
+
+    /** Parses the floor plan and creates the simulation, seeded (and the seed logged, to repeat the run). */
+    private static Simulation simulate(ServerConfig config, ResourceLocator.Found text, long seed, ServerLog log)
+            throws StartupException {
+        RsPlan plan;
+        try {
+            plan = RsPlanParser.parse(text.reader(), text.location);
         } catch (RsParsingException e) {
             throw new StartupException(e.getMessage());
         } catch (IOException e) {
             throw new StartupException("cannot read the floor plan " + config.floorPlanFileName + ": " + e.getMessage());
         }
-        long seed = config.randomSeed.orElse(System.nanoTime());
         log.log("randomSeed=" + seed + (config.randomSeed.isPresent() ? "" : "; set it to repeat this run"));
-        SimulationSettings settings = (config.lockstep
-                ? SimulationSettings.lockstep(config.modelingInterval, seed)
-                : SimulationSettings.paced(config.modelingInterval, config.simulationSpeed, config.interlockEnabled, seed))
-                .withRobotsInteract(config.robotsInteract);
-        Simulation simulation = new Simulation(plan, settings, log);
+        Simulation simulation = new Simulation(plan, SimulationSettings.of(config, seed), log);
         log.setSimTime(simulation.getScheduler()::recordedTime);
         if (config.waitForClients > 0) {
             log.log("Simulated time waits until " + config.waitForClients + " robot" + (config.waitForClients == 1 ? " is" : "s are")
@@ -131,6 +142,36 @@ public final class ServerLauncher {
             simulation.waitForRobots(config.waitForClients);
         }
         return simulation;
+    }
+
+    /**
+     * Opens the recording and the event log if the properties ask for them. The recording keeps the
+     * properties as they took effect: the floor plan given with -f, the seed chosen when none was set.
+     */
+    private static RunRecords keepRecords(ServerConfig config, Path workingDirectory, Simulation simulation,
+                                          ResourceLocator.Found planText, long seed, ServerLog log)
+            throws StartupException {
+        SortedMap<String, String> properties = new TreeMap<>(config.given);
+        properties.put("floorPlanFileName", config.floorPlanFileName);
+        properties.put("randomSeed", Long.toString(seed));
+        Recorder.Header header = new Recorder.Header(properties, planText.location, planText.text, seed);
+        try {
+            RunRecords records = RunRecords.open(simulation, header, resolve(workingDirectory, config.recordFileName),
+                    resolve(workingDirectory, config.eventLogFileName), log);
+            if (config.recordFileName != null) {
+                log.log("Recording the run in " + config.recordFileName + " (replay it with rp1.Replay)");
+            }
+            if (config.eventLogFileName != null) {
+                log.log("Writing every event sent to " + config.eventLogFileName);
+            }
+            return records;
+        } catch (IOException e) {
+            throw new StartupException(e.getMessage());
+        }
+    }
+
+    private static Path resolve(Path workingDirectory, String file) {
+        return file == null ? null : workingDirectory.resolve(file);
     }
 
     private static ClientListener listen(ServerConfig config, LaunchOptions options, Simulation simulation,

@@ -150,6 +150,20 @@ public final class Scheduler {
         }
     }
 
+    /**
+     * The time of the task that runs next (an immediate one's stamp, else the first timed one's), or
+     * infinity if none is queued: a replay stopping at a given time looks at it.
+     */
+    public double nextTaskTime() {
+        lock.lock();
+        try {
+            Entry e = peekImmediate();
+            return e != null ? e.time : horizon();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** Time of the first queued timed task, or infinity. Holds the lock. */
     private double horizon() {
         Entry e = peekTimed();
@@ -195,6 +209,21 @@ public final class Scheduler {
         lock.lock();
         try {
             return clock.getSimTime();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Moves a lockstep clock on to {@code time} (never back): a replay sets the time a recorded input
+     * was applied at before applying it, as the recorded run's clock then read. Paced clocks ignore it.
+     */
+    public void advanceTo(double time) {
+        lock.lock();
+        try {
+            if (clock.isLockstep() && time > clock.getSimTime()) {
+                clock.setSimTime(time);
+            }
         } finally {
             lock.unlock();
         }
@@ -392,6 +421,28 @@ public final class Scheduler {
         }
     }
 
+    /**
+     * After {@link #shutdown()}: waits until no thread is running a task any more (a thread that was in
+     * the middle of one finishes it), at most {@code timeoutMillis}; returns whether none is. What is
+     * read from the model afterwards (the picture at exit, the end of a recording) is then final.
+     */
+    public boolean awaitIdle(long timeoutMillis) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMillis);
+        lock.lock();
+        try {
+            while (executor != null) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    return false;
+                }
+                workAvailable.awaitNanos(left);
+            }
+            return true;
+        } finally {
+            lock.unlock();
+        }
+    }
+
     public boolean isShutDown() {
         lock.lock();
         try {
@@ -418,6 +469,9 @@ public final class Scheduler {
         lock.lock();
         try {
             executor = null;
+            if (shutDown) {
+                workAvailable.signalAll();
+            }
             signalIfIdle();
         } finally {
             lock.unlock();

@@ -11,6 +11,9 @@ package rp1.simulator.scheduler;
  * debugger, a client that thinks for a minute) is not followed by a burst of that length.</li>
  * <li>Lockstep ({@link #lockstep()}, {@code simulationSpeed=max}): the wall clock is never read; time
  * jumps to each task as it runs.</li>
+ * <li>Replay ({@link #replay()}): lockstep that cannot be held. A replay runs the recorded task
+ * sequence and applies each recorded input before the task it came before; whatever held time back
+ * in the recorded run is already in that sequence, so a hold of the replay's own would only stall it.</li>
  * </ul>
  *
  * <p>Three ways to hold time back: before {@link #begin()} nothing runs; while {@link #stop() stopped}
@@ -25,6 +28,7 @@ public final class SimClock {
     private final TimeSource wall;
     private final double speed;
     private final boolean lockstep;
+    private final boolean holdable;
     private boolean begun;
     private boolean stopped;
     private boolean held;
@@ -32,10 +36,11 @@ public final class SimClock {
     private long wallAnchor;
     private double simAnchor;
 
-    private SimClock(TimeSource wall, double speed, boolean lockstep) {
+    private SimClock(TimeSource wall, double speed, boolean lockstep, boolean holdable) {
         this.wall = wall;
         this.speed = speed;
         this.lockstep = lockstep;
+        this.holdable = holdable;
     }
 
     /**
@@ -47,12 +52,17 @@ public final class SimClock {
         if (!(speed > 0.0) || Double.isInfinite(speed)) {
             throw new IllegalArgumentException("simulation speed must be positive and finite, got " + speed);
         }
-        return new SimClock(wall, speed, false);
+        return new SimClock(wall, speed, false, true);
     }
 
     /** A clock that never reads the wall clock: time is the time of the task being run. */
     public static SimClock lockstep() {
-        return new SimClock(null, Double.POSITIVE_INFINITY, true);
+        return new SimClock(null, Double.POSITIVE_INFINITY, true, true);
+    }
+
+    /** A lockstep clock on which {@link #hold()} has no effect, for replaying a recorded run. */
+    public static SimClock replay() {
+        return new SimClock(null, Double.POSITIVE_INFINITY, true, false);
     }
 
     public boolean isLockstep() {
@@ -109,9 +119,9 @@ public final class SimClock {
         stopped = false;
     }
 
-    /** Time may not advance until {@link #release()}; work due now still runs. */
+    /** Time may not advance until {@link #release()}; work due now still runs. Not on a replay clock. */
     void hold() {
-        held = true;
+        held = holdable;
     }
 
     /** Ends a {@link #hold()}: time runs on from here, deadlines counting from now. */

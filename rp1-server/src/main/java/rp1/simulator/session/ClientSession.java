@@ -78,6 +78,12 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
 
         /** Queues a request of {@code session} for the next boundary. */
         void submit(ClientSession session, Request request);
+
+        /**
+         * An event for {@code session}'s client, just before it is sent ({@code delivered}), or one
+         * the model produced that the client has not subscribed to. On the thread running tasks.
+         */
+        void eventOut(ClientSession session, RsEvent event, boolean delivered);
     }
 
     private final int number;
@@ -266,7 +272,17 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     @Override
     public void send(RsEvent event) {
         if (!departed) {
+            host.eventOut(this, event, true);
             connection.sendEvent(event);
+        }
+    }
+
+    @Override
+    public void sendIfSubscribed(RsEvent event) {
+        if (isSubscribed(event.eventID, event.getIndex())) {
+            send(event);
+        } else if (!departed) {
+            host.eventOut(this, event, false);
         }
     }
 

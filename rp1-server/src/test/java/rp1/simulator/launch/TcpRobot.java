@@ -1,5 +1,6 @@
 package rp1.simulator.launch;
 
+import java.awt.Color;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -8,6 +9,7 @@ import java.util.function.Predicate;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsBodyCircle;
+import rp1.rossum.RsBodyPainter;
 import rp1.rossum.RsClient;
 import rp1.rossum.RsDifferentialSteering;
 import rp1.rossum.RsProperties;
@@ -20,9 +22,19 @@ import rp1.rossum.event.RsEvent;
  */
 final class TcpRobot extends RsClient {
     private final List<RsEvent> events = new ArrayList<>();
+    private RsBodyPainter pen;
 
     /** Connects to the server on {@code port} and sends the body; call {@link #startLoop()} next. */
     static TcpRobot connect(int port, String name) throws IOException {
+        return connect(port, name, false);
+    }
+
+    /** {@link #connect(int, String)} with a pen under the axle centre that leaves a 2 cm blue trail once down. */
+    static TcpRobot connectWithPen(int port, String name) throws IOException {
+        return connect(port, name, true);
+    }
+
+    private static TcpRobot connect(int port, String name, boolean withPen) throws IOException {
         TcpRobot robot = new TcpRobot();
         robot.setLogger(null);
         RsProperties p = new RsProperties();
@@ -34,12 +46,24 @@ final class TcpRobot extends RsClient {
         RsDifferentialSteering drive = new RsDifferentialSteering(0.18, 0.075);
         drive.addDefaultWheels(0.075, 0.03);
         body.addPart(drive);
+        if (withPen) {
+            robot.pen = new RsBodyPainter(new double[] {-0.01, -0.01, 0.01, -0.01, 0.01, 0.01, -0.01, 0.01}, 4);
+            robot.pen.setTrailerPosition(0.0, 0.0);
+            robot.pen.setTrailerWidth(0.02);
+            robot.pen.setPaintColor(Color.blue);
+            body.addPart(robot.pen);
+        }
         robot.sendBodySpecification(body);
         robot.addHeartbeatEventHandler(robot::record);
         robot.addPlacementEventHandler(robot::record);
         robot.addTimeoutEventHandler(robot::record);
         robot.addMotionHaltedEventHandler(robot::record);
         return robot;
+    }
+
+    /** Starts the trail (a robot connected with a pen). */
+    void penDown() {
+        sendPainterActivationRequest(pen);
     }
 
     /** Runs the event loop on a daemon thread. */

@@ -149,6 +149,55 @@ class SchedulerTest {
     }
 
     @Test
+    void aReplayClockIgnoresHoldsSoTheRecordedTaskSequenceRunsThrough() {
+        Scheduler s = new Scheduler(SimClock.replay());
+        s.begin();
+        s.hold();
+        s.schedule(5.0, Scheduler.NORMAL, record("later"));
+        assertEquals(5.0, s.nextTaskTime());
+        assertEquals(1, s.runUntilIdle());
+        assertEquals(Arrays.asList("later@5.0"), log);
+        assertEquals(Double.POSITIVE_INFINITY, s.nextTaskTime());
+    }
+
+    @Test
+    void aReplayMovesTheClockOnToARecordedInputsTimeButNeverBack() {
+        Scheduler s = new Scheduler(SimClock.replay());
+        s.begin();
+        s.advanceTo(2.5);
+        assertEquals(2.5, s.now());
+        s.advanceTo(1.0);
+        assertEquals(2.5, s.now());
+    }
+
+    @Test
+    void theNextTaskTimeIsAnImmediateTasksStampBeforeAnyTimedTask() {
+        Scheduler s = lockstep();
+        s.schedule(2.0, Scheduler.NORMAL, record("timed"));
+        s.scheduleImmediate(0.5, record("immediate"));
+        assertEquals(0.5, s.nextTaskTime());
+    }
+
+    @Test
+    @Timeout(10)
+    void afterShutdownAwaitIdleWaitsForTheTaskInProgressToFinish() throws Exception {
+        Scheduler s = lockstep();
+        CountDownLatch inside = new CountDownLatch(1);
+        s.scheduleImmediate(0.0, t -> {
+            inside.countDown();
+            sleep(200);
+            log.add("finished");
+        });
+        Thread holder = new Thread(s::runUntilIdle);
+        holder.start();
+        assertTrue(inside.await(5, TimeUnit.SECONDS));
+        s.shutdown();
+        assertTrue(s.awaitIdle(5000));
+        assertEquals(Arrays.asList("finished"), log, "the task had finished when awaitIdle returned");
+        holder.join(5000);
+    }
+
+    @Test
     void inputsAreAppliedAtTheNextBoundaryDeparturesFirstThenBySourceInArrivalOrder() {
         Scheduler s = lockstep();
         InputQueue inputs = new InputQueue(s);
@@ -306,6 +355,14 @@ class SchedulerTest {
         s.shutdown();
         loop.join(5000);
         assertFalse(loop.isAlive());
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private static void await(CountDownLatch latch) {

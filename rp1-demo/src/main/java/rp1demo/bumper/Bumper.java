@@ -1,0 +1,122 @@
+package rp1demo.bumper;
+
+import java.awt.Color;
+import java.io.IOException;
+
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyPainter;
+import rp1.rossum.RsClient;
+import rp1.rossum.RsRunnable;
+import rp1.rossum.event.RsMotionHaltedEvent;
+import rp1.rossum.event.RsPlacementEvent;
+import rp1.rossum.request.RsMotionRequest;
+import rp1demo.clientzero.ClientZero;
+
+/**
+ * A ClientZero that asks to be placed at a random free pose ({@code "$random"}), then drives straight
+ * ahead; when it bumps into something it backs off, turns and drives on. The turns grow by a
+ * golden-ratio step from one bump to the next, so the car does not bounce between two walls for
+ * ever. A motion that cannot even start (halted at once, with duration 0) counts as a bump; if it
+ * cannot turn either, it waits a moment and turns the other way, so simulated time always moves on.
+ * It decides from its events alone, so a run is a function of the server's seed.
+ */
+public class Bumper extends RsClient implements RsRunnable {
+    /** Forward speed, metres per second. */
+    static final double SPEED = 0.3;
+    /** How long one straight run may last before it is renewed, seconds. */
+    static final double STRAIGHT = 30.0;
+    /** Backing off after a bump: speed (m/s) and duration (s). */
+    static final double BACK_SPEED = -0.15;
+    static final double BACK_TIME = 0.5;
+    /** Turning rate, radians per second. */
+    static final double TURN_RATE = Math.PI / 2.0;
+    /** How long it waits when it can neither go on nor turn, seconds. */
+    static final double PAUSE = 0.25;
+
+    private enum Doing { AHEAD, BACKING, TURNING, WAITING }
+
+    private RsBody body;
+    private Doing doing = Doing.WAITING;
+    private int bumps;
+    private double turnSign = 1.0;
+
+    /** Connects to a simulator on the network and runs until it goes away. */
+    public static void main(String[] args) throws IOException {
+        Bumper b = new Bumper();
+        b.initialize();
+        b.run();
+    }
+
+    /** Sends the body (with a green pen), and asks for a random free pose. */
+    @Override
+    public void initialize() throws IOException {
+        super.initialize();
+        body = ClientZero.buildWithPainter(new Color(0, 140, 60));
+        sendBodySpecification(body);
+        addPlacementEventHandler(this::placed);
+        addMotionHaltedEventHandler(this::halted);
+        addTimeoutEventHandler(e -> turnOtherWay());
+        sendPlacementRequest("$random");
+    }
+
+    /** How many times it has bumped into something. */
+    public synchronized int getBumps() {
+        return bumps;
+    }
+
+    private synchronized void placed(RsPlacementEvent e) {
+        if (!e.valid) {
+            sendPlacementRequest("$random");
+            return;
+        }
+        sendPainterActivationRequest((RsBodyPainter) body.getPartByName(ClientZero.PEN));
+        ahead();
+    }
+
+    private synchronized void halted(RsMotionHaltedEvent e) {
+        if (e.causeOfHalt == RsMotionHaltedEvent.HALTED_ON_REQUEST) {
+            return;
+        }
+        boolean blocked = e.causeOfHalt == RsMotionHaltedEvent.HALTED_ON_COLLISION || e.duration == 0.0;
+        switch (doing) {
+            case AHEAD -> {
+                if (blocked) {
+                    bumps++;
+                    move(Doing.BACKING, BACK_SPEED, 0.0, BACK_TIME);
+                } else {
+                    ahead();
+                }
+            }
+            case BACKING -> turn();
+            case TURNING -> {
+                if (blocked) {
+                    doing = Doing.WAITING;
+                    sendTimeoutRequest(PAUSE);
+                } else {
+                    ahead();
+                }
+            }
+            case WAITING -> { }
+        }
+    }
+
+    private synchronized void turnOtherWay() {
+        turnSign = -turnSign;
+        turn();
+    }
+
+    private void ahead() {
+        move(Doing.AHEAD, SPEED, 0.0, STRAIGHT);
+    }
+
+    /** Between a quarter and three quarters of a turn, a golden-ratio step further each bump. */
+    private void turn() {
+        double angle = Math.PI * (0.5 + (bumps * 0.6180339887) % 1.0);
+        move(Doing.TURNING, 0.0, turnSign * TURN_RATE, angle / TURN_RATE);
+    }
+
+    private void move(Doing next, double v, double w, double duration) {
+        doing = next;
+        sendMotionRequest(new RsMotionRequest(v, w, duration));
+    }
+}

@@ -1,0 +1,164 @@
+package rp1;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.Locale;
+
+import rp1.rossum.RsLogAdapter;
+import rp1.rossum.RsLogInterface;
+import rp1.simulator.record.Recording;
+import rp1.simulator.record.RecordingException;
+import rp1.simulator.record.RecordingReader;
+import rp1.simulator.record.Replayer;
+import rp1.simulator.snapshot.WorldSnapshot;
+import rp1.view.Pictures;
+import rp1.view.Renderer;
+
+/**
+ * Replays a recorded run without its clients (docs/recording.md):
+ * {@code java rp1.Replay FILE [--events OUT] [--snapshot OUT.png] [--until T]}. The event log it
+ * writes is the one the run wrote, byte for byte, and the picture the one the run left. Exit status 0
+ * when replayed, 1 when the recording cannot be replayed (the message says why), 3 when the replay
+ * reached the end of the run but sent other events than the run did.
+ */
+public final class Replay {
+    /** Exit status when the replay's events differ from the run's. */
+    public static final int DIFFERS = 3;
+
+    static final String USAGE = String.join("\n",
+            "usage: java rp1.Replay RECORDING [--events OUT] [--snapshot OUT.png] [--until T]",
+            "  RECORDING        a file written by the server with recordFileName",
+            "  --events OUT     write every event sent, one line each, as eventLogFileName does",
+            "  --snapshot PNG   write a picture of the world where the replay stops",
+            "  --until T        stop at simulated time T (seconds) instead of the end of the run",
+            "  -h, --help       print this and exit");
+
+    private Replay() {
+    }
+
+    /** Replays; the process exits with the status. */
+    public static void main(String[] args) {
+        System.exit(run(args, System.out, System.err));
+    }
+
+    /** Replays as the command line asks; returns the exit status. */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        Options o;
+        try {
+            o = Options.parse(args);
+        } catch (IllegalArgumentException e) {
+            err.println("rp1.Replay: " + e.getMessage() + "\n" + USAGE);
+            return 1;
+        }
+        if (o == null) {
+            out.println(USAGE);
+            return 0;
+        }
+        try {
+            Recording recording = RecordingReader.read(o.recording);
+            Replayer replayer = Replayer.prepare(recording, o.events, log(err));
+            Replayer.Outcome outcome = replayer.run(o.until);
+            if (o.snapshot != null) {
+                Renderer renderer = new Renderer(replayer.simulation().getWorld().getPlan());
+                WorldSnapshot snapshot = WorldSnapshot.of(replayer.simulation().getWorld(), outcome.time());
+                Pictures.writePng(Pictures.render(renderer, snapshot), o.snapshot);
+            }
+            return report(recording, outcome, o, out, err);
+        } catch (RecordingException e) {
+            err.println("rp1.Replay: " + e.getMessage());
+            return 1;
+        } catch (IOException e) {
+            err.println("rp1.Replay: " + e.getMessage());
+            return 1;
+        }
+    }
+
+    private static int report(Recording recording, Replayer.Outcome outcome, Options o, PrintStream out, PrintStream err) {
+        String figures = String.format(Locale.ROOT, "%d tasks, %d events, to simulated time %s s",
+                outcome.tasks(), outcome.events(), outcome.time());
+        if (outcome.matches()) {
+            out.println("Replayed " + o.recording + ": " + figures + "; the events are those of the recorded run");
+            return 0;
+        }
+        if (outcome.difference() != null) {
+            err.println("rp1.Replay: " + o.recording + ": the replay differs from the recorded run: " + outcome.difference()
+                    + " (" + figures + ")");
+            return DIFFERS;
+        }
+        if (recording.end() == null) {
+            out.println("Replayed " + o.recording + " as far as it goes (it has no end: the run did not stop cleanly): "
+                    + figures);
+        } else {
+            out.println("Replayed " + o.recording + " up to " + o.until + " s: " + figures);
+        }
+        return 0;
+    }
+
+    /** Important lines of the replayed simulation (a task that failed) go to standard error. */
+    private static RsLogInterface log(PrintStream err) {
+        return new RsLogAdapter() {
+            @Override
+            public void logIt(String level, String message) {
+                if (level.equals("X")) {
+                    err.println("rp1.Replay: " + message);
+                }
+            }
+        };
+    }
+
+    /** The command line. */
+    private static final class Options {
+        Path recording;
+        Path events;
+        Path snapshot;
+        double until = Double.POSITIVE_INFINITY;
+
+        /** The options, or null if help was asked for. */
+        static Options parse(String[] args) {
+            Options o = new Options();
+            for (int i = 0; i < args.length; i++) {
+                switch (args[i]) {
+                    case "-h", "--help" -> {
+                        return null;
+                    }
+                    case "--events" -> o.events = Paths.get(value(args, ++i, "--events"));
+                    case "--snapshot" -> o.snapshot = Paths.get(value(args, ++i, "--snapshot"));
+                    case "--until" -> o.until = time(value(args, ++i, "--until"));
+                    default -> {
+                        if (args[i].startsWith("-") || o.recording != null) {
+                            throw new IllegalArgumentException((args[i].startsWith("-") ? "unknown option "
+                                    : "unexpected argument ") + args[i]);
+                        }
+                        o.recording = Paths.get(args[i]);
+                    }
+                }
+            }
+            if (o.recording == null) {
+                throw new IllegalArgumentException("no recording given");
+            }
+            return o;
+        }
+
+        private static String value(String[] args, int i, String option) {
+            if (i >= args.length) {
+                throw new IllegalArgumentException(option + " needs a value");
+            }
+            return args[i];
+        }
+
+        private static double time(String v) {
+            double t;
+            try {
+                t = Double.parseDouble(v);
+            } catch (NumberFormatException e) {
+                t = Double.NaN;
+            }
+            if (!(t >= 0.0) || Double.isInfinite(t)) {
+                throw new IllegalArgumentException("--until needs a simulated time in seconds (0 or more), got " + v);
+            }
+            return t;
+        }
+    }
+}

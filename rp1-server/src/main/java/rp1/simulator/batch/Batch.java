@@ -1,0 +1,274 @@
+package rp1.simulator.batch;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Properties;
+import java.util.Set;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+
+import rp1.planparser.RsParsingException;
+import rp1.planparser.RsPlanParser;
+import rp1.rossum.RsPlan;
+import rp1.simulator.config.ConfigException;
+import rp1.simulator.config.ResourceLocator;
+import rp1.simulator.config.ServerConfig;
+
+/**
+ * Runs a server's properties over several seeds and floor plans, each (seed, plan) a headless world
+ * in a Java process of its own ({@link SweepRun}), N at a time, and gathers what they leave into
+ * {@code results.csv}. A run is a function of its properties, plan and seed and nothing else: it gets
+ * them in its own {@code run.ini} and shares no state with the others, so the same runs could be
+ * spread over several machines. A run that fails is a row with its reason; the others go on.
+ */
+public final class Batch {
+    /** Each run's recording, event log and end picture, in its folder. */
+    public static final String RECORDING = "recording.txt";
+    public static final String EVENTS = "events.txt";
+    public static final String PICTURE = "end.png";
+    /** What the run's process printed. */
+    public static final String OUTPUT = "output.txt";
+
+    private final SweepOptions options;
+    private final Path out;
+    private final String propertiesText;
+    private final Map<String, RsPlan> plans;
+    private final List<Run> runs;
+
+    /** One (seed, plan) of the sweep and the folder it runs in. */
+    public record Run(long seed, String plan, Path dir) {
+    }
+
+    /** How a run went, and the trails its robots left. */
+    public record Outcome(Run run, RunReport report, double wallSeconds, List<Trail> trails) {
+    }
+
+    private Batch(SweepOptions options, Path out, String propertiesText, Map<String, RsPlan> plans, List<Run> runs) {
+        this.options = options;
+        this.out = out;
+        this.propertiesText = propertiesText;
+        this.plans = plans;
+        this.runs = runs;
+    }
+
+    /**
+     * Checks everything that can be checked before a run starts: the properties (valid, loading a
+     * client, bounding every run), the plans (found and parsed), the output folder.
+     *
+     * @param workingDirectory where the properties and plans are looked for first, as the server does
+     * @throws SweepException saying what is wrong
+     */
+    public static Batch prepare(SweepOptions options, Path workingDirectory, ClassLoader loader) throws SweepException {
+        ResourceLocator locator = new ResourceLocator(workingDirectory, loader);
+        try {
+            ResourceLocator.Found found = locator.properties(options.properties);
+            Properties table = ResourceLocator.parseProperties(found);
+            ServerConfig config = ServerConfig.from(table, found.location,
+                    options.plans.isEmpty() ? null : options.plans.get(0));
+            checkRunnable(config, found.location);
+            List<String> names = options.plans.isEmpty() ? List.of(config.floorPlanFileName) : options.plans;
+            Map<String, RsPlan> plans = new LinkedHashMap<>();
+            for (String name : names) {
+                plans.put(name, plan(locator, name));
+            }
+            Path out = options.out.toAbsolutePath();
+            if (out.toString().matches(".*\\s.*")) {
+                throw new SweepException("--out " + out + ": the path must not contain white space (a property"
+                        + " value ends at the first space, and each run's files are named in its properties)");
+            }
+            return new Batch(options, out, found.text, plans, runs(options.seeds, plans.keySet(), out.resolve("runs")));
+        } catch (ConfigException e) {
+            throw new SweepException(e.getMessage());
+        }
+    }
+
+    /** A run must load its robot, and must end by itself. */
+    private static void checkRunnable(ServerConfig config, String location) throws SweepException {
+        if (!config.dlcEnabled) {
+            throw new SweepException(location + ": no robot is loaded: set dlcEnabled=true and dlcName=CLASS (a sweep's"
+                    + " runs have no network clients)");
+        }
+        if (!config.exitWhenClientsDone && Double.isInfinite(config.maxSimulationTime)) {
+            throw new SweepException(location + ": neither maxSimulationTime nor exitWhenClientsDone is set, so a run"
+                    + " might never end: set maxSimulationTime=SECONDS (or exitWhenClientsDone=true)");
+        }
+    }
+
+    private static RsPlan plan(ResourceLocator locator, String name) throws ConfigException, SweepException {
+        ResourceLocator.Found text = locator.plan(name);
+        try {
+            return RsPlanParser.parse(text.text, text.location);
+        } catch (RsParsingException e) {
+            throw new SweepException(e.getMessage());
+        }
+    }
+
+    /** Plan by plan, seed by seed, each in {@code runs/SEED-PLAN} (the plan's file name without .txt). */
+    private static List<Run> runs(List<Long> seeds, Set<String> plans, Path runsDir) throws SweepException {
+        List<Run> runs = new ArrayList<>();
+        Set<String> stems = new HashSet<>();
+        for (String plan : plans) {
+            String stem = stem(plan);
+            if (!stems.add(stem)) {
+                throw new SweepException("two of the plans are named " + stem + "; their runs' folders would be the same");
+            }
+            for (long seed : seeds) {
+                runs.add(new Run(seed, plan, runsDir.resolve(seed + "-" + stem)));
+            }
+        }
+        return runs;
+    }
+
+    /** The plan's file name without its folder and its {@code .txt}, in letters a folder name may hold. */
+    static String stem(String plan) {
+        String name = Paths.get(plan).getFileName().toString();
+        if (name.toLowerCase(Locale.ROOT).endsWith(".txt")) {
+            name = name.substring(0, name.length() - 4);
+        }
+        return name.replaceAll("[^A-Za-z0-9._-]", "_");
+    }
+
+    /** The folder the results go to. */
+    public Path out() {
+        return out;
+    }
+
+    /** The runs, in the order of the table. */
+    public List<Run> runs() {
+        return runs;
+    }
+
+    /** The plans, in the order given, by the name they were given. */
+    public Map<String, RsPlan> plans() {
+        return plans;
+    }
+
+    /**
+     * Runs every run, {@code --jobs} at a time, then writes {@code results.csv}.
+     *
+     * @return the outcomes, in the order of {@link #runs()}
+     */
+    public List<Outcome> run(Progress progress) throws IOException, InterruptedException {
+        Files.createDirectories(out.resolve("runs"));
+        ExecutorService pool = Executors.newFixedThreadPool(options.jobs);
+        List<Future<Outcome>> futures = new ArrayList<>();
+        List<Outcome> outcomes = new ArrayList<>();
+        try {
+            for (Run r : runs) {
+                futures.add(pool.submit(() -> {
+                    Outcome o = execute(r);
+                    progress.finished(o);
+                    return o;
+                }));
+            }
+            for (Future<Outcome> f : futures) {
+                outcomes.add(f.get());
+            }
+        } catch (ExecutionException e) {
+            throw new IOException("a run could not be carried out: " + e.getCause(), e.getCause());
+        } finally {
+            pool.shutdownNow();
+            progress.close();
+        }
+        ResultsCsv.write(out.resolve("results.csv"), outcomes);
+        return outcomes;
+    }
+
+    /** One run in a process of its own, stopped if it takes longer than the timeout. */
+    private Outcome execute(Run run) throws IOException, InterruptedException {
+        Files.createDirectories(run.dir());
+        Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
+        Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
+        Files.write(run.dir().resolve(SweepRun.PROPERTIES), properties(run).getBytes(StandardCharsets.UTF_8));
+        long start = System.nanoTime();
+        Process p = new ProcessBuilder(command(run)).redirectErrorStream(true)
+                .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
+        boolean ended;
+        try {
+            ended = p.waitFor((long) (options.timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            p.destroyForcibly();
+            throw e;
+        }
+        RunReport report;
+        if (!ended) {
+            p.destroyForcibly();
+            p.waitFor();
+            report = RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
+                    options.timeoutSeconds), p.exitValue());
+        } else {
+            report = report(run, p.exitValue());
+        }
+        double wall = (System.nanoTime() - start) * 1e-9;
+        return new Outcome(run, report, wall, trails(run));
+    }
+
+    private static RunReport report(Run run, int status) {
+        try {
+            return RunReport.read(run.dir());
+        } catch (IOException e) {
+            return RunReport.failed("the run ended with status " + status + " and no results: " + lastLine(run), status);
+        }
+    }
+
+    private static List<Trail> trails(Run run) {
+        try {
+            return TrailFile.read(run.dir());
+        } catch (IOException e) {
+            return List.of();
+        }
+    }
+
+    /** The last thing the run's process printed. */
+    private static String lastLine(Run run) {
+        try {
+            List<String> lines = Files.readAllLines(run.dir().resolve(OUTPUT), StandardCharsets.UTF_8);
+            for (int i = lines.size() - 1; i >= 0; i--) {
+                if (!lines.get(i).isBlank()) {
+                    return lines.get(i).trim();
+                }
+            }
+            return "it printed nothing";
+        } catch (IOException e) {
+            return "no output (" + e.getMessage() + ")";
+        }
+    }
+
+    /**
+     * The user's properties with the run's own keys after them (later keys win): its seed and plan,
+     * no window, and its log, recording, event log and picture in its folder.
+     */
+    private String properties(Run run) {
+        Path d = run.dir().toAbsolutePath();
+        return propertiesText + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + "\n"
+                + "randomSeed=" + run.seed() + "\n"
+                + "floorPlanFileName=" + run.plan() + "\n"
+                + "enableGUI=false\n"
+                + "logToFile=true\n"
+                + "logFileName=" + d.resolve(SweepRun.LOG) + "\n"
+                + "logToSystemOut=false\n"
+                + "recordFileName=" + d.resolve(RECORDING) + "\n"
+                + "eventLogFileName=" + d.resolve(EVENTS) + "\n"
+                + "snapshotFileName=" + d.resolve(PICTURE) + "\n"
+                + "snapshotInterval=0\n";
+    }
+
+    /** This Java, this class path, headless, {@link SweepRun} on the run's folder. */
+    private static List<String> command(Run run) {
+        String java = Paths.get(System.getProperty("java.home"), "bin", "java").toString();
+        return List.of(java, "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"),
+                SweepRun.class.getName(), run.dir().toAbsolutePath().toString());
+    }
+}

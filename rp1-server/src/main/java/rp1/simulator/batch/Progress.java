@@ -1,0 +1,65 @@
+package rp1.simulator.batch;
+
+import java.io.PrintStream;
+import java.util.Locale;
+
+/**
+ * Tells the user how a sweep is going. On a terminal, one line redrawn in place: a bar, the runs done
+ * and failed, and an estimate of the time left. Elsewhere (a CI log, a pipe), a plain line per run.
+ */
+public final class Progress {
+    private static final int BAR = 30;
+
+    private final int total;
+    private final PrintStream out;
+    private final boolean terminal;
+    private final long start = System.nanoTime();
+    private int done;
+    private int failed;
+
+    /**
+     * @param total    the number of runs
+     * @param terminal whether {@code out} is a terminal (draw the bar) or not (print lines)
+     */
+    public Progress(int total, PrintStream out, boolean terminal) {
+        this.total = total;
+        this.out = out;
+        this.terminal = terminal;
+    }
+
+    /** A run has ended. Any thread. */
+    public synchronized void finished(Batch.Outcome o) {
+        done++;
+        if (!o.report().succeeded()) {
+            failed++;
+        }
+        if (terminal) {
+            out.print("\r" + bar());
+        } else {
+            out.println(String.format(Locale.ROOT, "[%d/%d] seed %d on %s: %s (%.1f s)", done, total, o.run().seed(),
+                    o.run().plan(), o.report().endReason(), o.wallSeconds()));
+        }
+        out.flush();
+    }
+
+    /** Every run has ended. */
+    public synchronized void close() {
+        if (terminal) {
+            out.println();
+        }
+    }
+
+    private String bar() {
+        int filled = total == 0 ? BAR : done * BAR / total;
+        double elapsed = (System.nanoTime() - start) * 1e-9;
+        String left = done == 0 ? "" : String.format(Locale.ROOT, ", about %s left",
+                duration(elapsed / done * (total - done)));
+        return "[" + "#".repeat(filled) + ".".repeat(BAR - filled) + "] " + done + "/" + total + " runs, "
+                + failed + " failed" + left + "   ";
+    }
+
+    private static String duration(double seconds) {
+        long s = Math.round(seconds);
+        return s >= 60 ? (s / 60) + " min " + (s % 60) + " s" : s + " s";
+    }
+}

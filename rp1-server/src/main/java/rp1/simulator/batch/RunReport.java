@@ -1,0 +1,101 @@
+package rp1.simulator.batch;
+
+import java.io.IOException;
+import java.io.Reader;
+import java.io.StringReader;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Properties;
+
+/**
+ * How one run of a sweep ended, as its process leaves it in {@code result.txt} for the sweep to read:
+ * the simulated time it stopped at, why, the server's exit status, and every robot's results.
+ *
+ * @param endTime    simulated seconds at the end (NaN if the run never started)
+ * @param endReason  {@code max-simulation-time}, {@code clients-done}, or what went wrong
+ * @param exitStatus the server's exit status (docs/guide.md section 4), or the process's
+ */
+public record RunReport(double endTime, String endReason, int exitStatus, List<RobotResult> robots) {
+    /** The file a run leaves in its folder. */
+    public static final String FILE = "result.txt";
+
+    /** Copies the list. */
+    public RunReport {
+        robots = List.copyOf(robots);
+    }
+
+    /** A run that did not get as far as reporting itself. */
+    public static RunReport failed(String reason, int exitStatus) {
+        return new RunReport(Double.NaN, reason, exitStatus, List.of());
+    }
+
+    /** Whether the run ended as its properties meant it to: status 0. */
+    public boolean succeeded() {
+        return exitStatus == 0;
+    }
+
+    /** Writes the report into {@code dir}. */
+    public void write(Path dir) throws IOException {
+        Properties p = new Properties();
+        p.setProperty("end_time", Double.toString(endTime));
+        p.setProperty("end_reason", endReason);
+        p.setProperty("exit_status", Integer.toString(exitStatus));
+        p.setProperty("robots", Integer.toString(robots.size()));
+        for (int i = 0; i < robots.size(); i++) {
+            RobotResult r = robots.get(i);
+            String k = "robot." + (i + 1) + ".";
+            p.setProperty(k + "name", r.name());
+            p.setProperty(k + "x", Double.toString(r.x()));
+            p.setProperty(k + "y", Double.toString(r.y()));
+            p.setProperty(k + "heading", Double.toString(r.heading()));
+            p.setProperty(k + "distance", Double.toString(r.distance()));
+            p.setProperty(k + "collisions", Integer.toString(r.collisions()));
+            p.setProperty(k + "events", Long.toString(r.events()));
+        }
+        StringWriter text = new StringWriter();
+        p.store(text, null);
+        Files.write(dir.resolve(FILE), text.toString().getBytes(StandardCharsets.UTF_8));
+    }
+
+    /**
+     * Reads the report a run left in {@code dir}.
+     *
+     * @throws IOException if there is none or it is not one
+     */
+    public static RunReport read(Path dir) throws IOException {
+        Properties p = new Properties();
+        try (Reader in = new StringReader(Files.readString(dir.resolve(FILE)))) {
+            p.load(in);
+        }
+        try {
+            List<RobotResult> robots = new ArrayList<>();
+            int n = Integer.parseInt(required(p, "robots"));
+            for (int i = 1; i <= n; i++) {
+                String k = "robot." + i + ".";
+                robots.add(new RobotResult(required(p, k + "name"), real(p, k + "x"), real(p, k + "y"),
+                        real(p, k + "heading"), real(p, k + "distance"), Integer.parseInt(required(p, k + "collisions")),
+                        Long.parseLong(required(p, k + "events"))));
+            }
+            return new RunReport(real(p, "end_time"), required(p, "end_reason"),
+                    Integer.parseInt(required(p, "exit_status")), robots);
+        } catch (NumberFormatException e) {
+            throw new IOException(dir.resolve(FILE) + ": not a run's report: " + e.getMessage(), e);
+        }
+    }
+
+    private static String required(Properties p, String key) throws IOException {
+        String v = p.getProperty(key);
+        if (v == null) {
+            throw new IOException("a run's report without " + key);
+        }
+        return v;
+    }
+
+    private static double real(Properties p, String key) throws IOException {
+        return Double.parseDouble(required(p, key));
+    }
+}

@@ -1,0 +1,164 @@
+package rp1.simulator.batch;
+
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * A sweep's command line: {@code -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N]
+ * [--timeout S] --out DIR}. Immutable.
+ */
+public final class SweepOptions {
+    /** The most runs one sweep may have. */
+    static final int MAX_RUNS = 100_000;
+    /** Wall seconds a run may take unless {@code --timeout} says otherwise. */
+    static final double DEFAULT_TIMEOUT = 600.0;
+
+    /** What the command line may hold. */
+    public static final String USAGE = String.join("\n",
+            "usage: java rp1.Sweep -p PROPERTIES --seeds SEEDS --out DIR [--plans A.txt,B.txt] [--jobs N] [--timeout S]",
+            "  -p PROPERTIES  the server's properties: a file, or Properties/NAME on the class path; they must",
+            "                 load the robot (dlcEnabled, dlcName) and bound every run (maxSimulationTime or",
+            "                 exitWhenClientsDone)",
+            "  --seeds SEEDS  the seeds to run: 1-16, or a list such as 1,2,5-8 (0 or more)",
+            "  --plans LIST   floor plans, separated by commas (default: the properties' floorPlanFileName)",
+            "  --jobs N       runs at a time (default: the number of cores)",
+            "  --timeout S    wall-clock seconds after which a run is stopped and counted as failed (default 600)",
+            "  --out DIR      where results.csv, summary.png and runs/SEED-PLAN/ go (created if need be)",
+            "  -h, --help     print this and exit");
+
+    public final String properties;
+    public final List<Long> seeds;
+    /** The plans asked for, or empty for the properties' own. */
+    public final List<String> plans;
+    public final int jobs;
+    public final double timeoutSeconds;
+    public final Path out;
+
+    private SweepOptions(String properties, List<Long> seeds, List<String> plans, int jobs, double timeoutSeconds,
+                         Path out) {
+        this.properties = properties;
+        this.seeds = Collections.unmodifiableList(seeds);
+        this.plans = Collections.unmodifiableList(plans);
+        this.jobs = jobs;
+        this.timeoutSeconds = timeoutSeconds;
+        this.out = out;
+    }
+
+    /**
+     * Parses the command line.
+     *
+     * @return the options, or null if help was asked for
+     * @throws IllegalArgumentException saying what is wrong
+     */
+    public static SweepOptions parse(String[] args) {
+        String properties = null;
+        List<Long> seeds = null;
+        List<String> plans = new ArrayList<>();
+        int jobs = Runtime.getRuntime().availableProcessors();
+        double timeout = DEFAULT_TIMEOUT;
+        Path out = null;
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            switch (a) {
+                case "-h", "--help" -> {
+                    return null;
+                }
+                case "-p" -> properties = value(args, ++i, a);
+                case "--seeds" -> seeds = seeds(value(args, ++i, a));
+                case "--plans" -> plans = names(value(args, ++i, a));
+                case "--jobs" -> jobs = jobs(value(args, ++i, a));
+                case "--timeout" -> timeout = positive(value(args, ++i, a), a, 1.0e7);
+                case "--out" -> out = Paths.get(value(args, ++i, a));
+                default -> throw new IllegalArgumentException((a.startsWith("-") ? "unknown option " : "unexpected argument ") + a);
+            }
+        }
+        if (properties == null || seeds == null || out == null) {
+            throw new IllegalArgumentException("-p, --seeds and --out are required");
+        }
+        if (seeds.size() * (long) Math.max(1, plans.size()) > MAX_RUNS) {
+            throw new IllegalArgumentException("more than " + MAX_RUNS + " runs");
+        }
+        return new SweepOptions(properties, seeds, plans, jobs, timeout, out);
+    }
+
+    private static String value(String[] args, int i, String option) {
+        if (i >= args.length) {
+            throw new IllegalArgumentException(option + " needs a value");
+        }
+        return args[i];
+    }
+
+    /** {@code 1-16}, {@code 3}, {@code 1,2,5-8}: in the order given, each seed once. */
+    static List<Long> seeds(String spec) {
+        Set<Long> seeds = new LinkedHashSet<>();
+        for (String part : spec.split(",", -1)) {
+            int dash = part.indexOf('-', 1);
+            long from = seed(dash < 0 ? part : part.substring(0, dash), spec);
+            long to = dash < 0 ? from : seed(part.substring(dash + 1), spec);
+            if (to < from || to - from >= MAX_RUNS) {
+                throw new IllegalArgumentException("--seeds " + spec + ": " + part + " is not a range of seeds");
+            }
+            for (long s = from; s <= to && seeds.size() <= MAX_RUNS; s++) {
+                seeds.add(s);
+            }
+        }
+        return new ArrayList<>(seeds);
+    }
+
+    private static long seed(String s, String spec) {
+        long v;
+        try {
+            v = Long.parseLong(s.trim());
+        } catch (NumberFormatException e) {
+            v = -1;
+        }
+        if (v < 0) {
+            throw new IllegalArgumentException("--seeds " + spec + ": \"" + s + "\" is not a seed (0 or more)");
+        }
+        return v;
+    }
+
+    private static List<String> names(String list) {
+        List<String> names = new ArrayList<>();
+        for (String n : list.split(",")) {
+            if (!n.trim().isEmpty()) {
+                names.add(n.trim());
+            }
+        }
+        if (names.isEmpty()) {
+            throw new IllegalArgumentException("--plans needs at least one floor plan");
+        }
+        return names;
+    }
+
+    private static int jobs(String v) {
+        int n;
+        try {
+            n = Integer.parseInt(v);
+        } catch (NumberFormatException e) {
+            n = 0;
+        }
+        if (n < 1 || n > 1000) {
+            throw new IllegalArgumentException("--jobs needs a whole number from 1 to 1000, got " + v);
+        }
+        return n;
+    }
+
+    private static double positive(String v, String option, double max) {
+        double d;
+        try {
+            d = Double.parseDouble(v);
+        } catch (NumberFormatException e) {
+            d = Double.NaN;
+        }
+        if (!(d > 0.0) || d > max) {
+            throw new IllegalArgumentException(option + " needs a positive number, got " + v);
+        }
+        return d;
+    }
+}

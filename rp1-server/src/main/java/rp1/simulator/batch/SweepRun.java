@@ -1,0 +1,119 @@
+package rp1.simulator.batch;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.List;
+
+import rp1.simulator.Simulation;
+import rp1.simulator.config.ServerConfig;
+import rp1.simulator.launch.ExitStatus;
+import rp1.simulator.launch.LaunchOptions;
+import rp1.simulator.launch.RunningServer;
+import rp1.simulator.launch.ServerLauncher;
+import rp1.simulator.launch.StartupException;
+import rp1.simulator.launch.ViewHook;
+
+/**
+ * One run of a sweep, in a process of its own: {@code java rp1.simulator.batch.SweepRun DIR} starts
+ * the server with {@code DIR/run.ini} (which the sweep wrote: the user's properties with the run's
+ * seed, plan and output files), waits until it stops, and leaves {@link RunReport#FILE} and
+ * {@link TrailFile#FILE} in DIR. The process's exit status is the server's.
+ */
+public final class SweepRun {
+    /** The properties a sweep writes into each run's folder. */
+    public static final String PROPERTIES = "run.ini";
+    /** The server's log in each run's folder. */
+    public static final String LOG = "server.log";
+
+    private final Path dir;
+    private RunStatistics statistics;
+    private List<RobotResult> robots = List.of();
+    private double endTime = Double.NaN;
+
+    private SweepRun(Path dir) {
+        this.dir = dir;
+    }
+
+    /** Runs the run in the folder given; the process exits with the server's status. */
+    public static void main(String[] args) {
+        if (args.length != 1) {
+            System.err.println("usage: java rp1.simulator.batch.SweepRun RUN-FOLDER (started by rp1.Sweep)");
+            System.exit(ExitStatus.STARTUP_FAILED);
+        }
+        System.exit(new SweepRun(Paths.get(args[0]).toAbsolutePath()).run());
+    }
+
+    private int run() {
+        RunningServer server;
+        try {
+            server = ServerLauncher.start(new String[] {"-p", dir.resolve(PROPERTIES).toString()},
+                    Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch));
+        } catch (StartupException e) {
+            return report(RunReport.failed("startup failed: " + e.getMessage(), e.getExitStatus()));
+        }
+        int status;
+        try {
+            status = server.awaitExit();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return report(RunReport.failed("interrupted", ExitStatus.STARTUP_FAILED));
+        }
+        return report(new RunReport(endTime, reason(status, server.getConfig()), status, robots));
+    }
+
+    /**
+     * The server's view: the standard one (which writes the picture at the end), with the statistics
+     * watching beside it; when the server stops, the results are taken before the clients are closed.
+     */
+    private AutoCloseable watch(ViewHook.Context context) throws Exception {
+        Simulation simulation = context.simulation;
+        statistics = RunStatistics.watch(simulation);
+        AutoCloseable view = ViewHook.standard().open(context);
+        return () -> {
+            endTime = simulation.getScheduler().recordedTime();
+            robots = statistics.results(simulation.getWorld());
+            view.close();
+        };
+    }
+
+    private String reason(int status, ServerConfig config) {
+        if (status == ExitStatus.CLIENT_FAILED) {
+            return "client failed: " + firstFailure();
+        }
+        if (status != ExitStatus.OK) {
+            return "exit status " + status;
+        }
+        return endTime >= config.maxSimulationTime ? "max-simulation-time" : "clients-done";
+    }
+
+    /** The first line of the server's log that says what failed. */
+    private String firstFailure() {
+        try {
+            for (String line : Files.readAllLines(dir.resolve(LOG), StandardCharsets.UTF_8)) {
+                String[] parts = line.split(" ", 4);
+                if (parts.length == 4 && parts[3].contains("failed:")) {
+                    return parts[3];
+                }
+            }
+        } catch (IOException e) {
+            return "see " + dir.resolve(LOG) + " (" + e.getMessage() + ")";
+        }
+        return "see " + dir.resolve(LOG);
+    }
+
+    private int report(RunReport report) {
+        try {
+            report.write(dir);
+            if (statistics != null) {
+                TrailFile.write(dir, statistics.trails());
+            }
+        } catch (IOException e) {
+            System.err.println("rp1.simulator.batch.SweepRun: cannot write the run's results in " + dir + ": "
+                    + e.getMessage());
+        }
+        return report.exitStatus();
+    }
+}

@@ -1,0 +1,136 @@
+package rp1.simulator.record;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+
+import rp1.rossum.RsLogInterface;
+import rp1.simulator.ViewInput;
+import rp1.simulator.scheduler.Input;
+import rp1.simulator.scheduler.InputQueue;
+import rp1.simulator.scheduler.Scheduler;
+import rp1.simulator.session.ClientInput;
+import rp1.simulator.world.WorldModel;
+
+/**
+ * Writes the recording of a run (docs/recording.md) as it happens: the header when opened, each
+ * input as it is applied (with the number of model tasks run before it and its time), and the end
+ * when closed. It never stops the run: if it cannot write, it says so in the log and notes in the
+ * file that the recording broke off.
+ */
+public final class Recorder implements InputQueue.Listener {
+    /** What a run starts from. */
+    public record Header(Map<String, String> properties, String planName, String planText, long seed) {
+    }
+
+    private final Scheduler scheduler;
+    private final RsLogInterface log;
+    private final String fileName;
+    private final Set<Integer> clients = new HashSet<>();
+    private Writer out;
+
+    private Recorder(Writer out, String fileName, Scheduler scheduler, RsLogInterface log) {
+        this.out = out;
+        this.fileName = fileName;
+        this.scheduler = scheduler;
+        this.log = log;
+    }
+
+    /**
+     * Creates (or truncates) {@code file} and writes the header. Register the recorder with the
+     * simulation's input queue before the run starts.
+     */
+    public static Recorder open(Path file, Header header, Scheduler scheduler, RsLogInterface log) throws IOException {
+        Writer w = new BufferedWriter(Files.newBufferedWriter(file, StandardCharsets.UTF_8), 1 << 16);
+        Recorder r = new Recorder(w, file.toString(), scheduler, log);
+        try {
+            r.writeHeader(header);
+        } catch (IOException e) {
+            w.close();
+            throw e;
+        }
+        return r;
+    }
+
+    private void writeHeader(Header h) throws IOException {
+        out.write("# A run of the RP1 simulator; replay it with: ./rp1 replay " + Path.of(fileName).getFileName() + "\n");
+        write(new TextLine(RecordingFormat.MAGIC).integer(RecordingFormat.VERSION));
+        write(new TextLine(RecordingFormat.WORLD_MODEL).integer(WorldModel.VERSION));
+        write(new TextLine(RecordingFormat.SEED).integer(h.seed()));
+        for (Map.Entry<String, String> p : h.properties().entrySet()) {
+            write(new TextLine(RecordingFormat.PROPERTY).text(p.getKey()).text(p.getValue()));
+        }
+        String[] lines = h.planText().split("\r\n|\r|\n", -1);
+        write(new TextLine(RecordingFormat.PLAN).text(h.planName()).integer(lines.length));
+        for (String line : lines) {
+            out.write(RecordingFormat.PLAN_LINE + line + "\n");
+        }
+    }
+
+    private void write(TextLine line) throws IOException {
+        out.write(line.toString());
+        out.write('\n');
+    }
+
+    @Override
+    public synchronized void applying(Input input, double simTime) {
+        if (out == null) {
+            return;
+        }
+        try {
+            TextLine line = new TextLine(RecordingFormat.INPUT).integer(scheduler.modelTasksRun()).real(simTime);
+            if (input instanceof ClientInput c) {
+                int client = c.session().getNumber();
+                if (clients.add(client)) {
+                    write(new TextLine(RecordingFormat.CLIENT).integer(client).text(c.session().getDescription()));
+                }
+                InputText.write(line.integer(client), c.request());
+            } else if (input instanceof ViewInput v) {
+                InputText.write(line.integer(0), v.action());
+            } else {
+                throw new IllegalArgumentException("an input of unknown kind: " + input);
+            }
+            write(line);
+        } catch (IOException | RuntimeException e) {
+            breakOff("cannot record " + input + ": " + e.getMessage());
+        }
+    }
+
+    /** Stops recording with a line that says why, so a replay refuses the file with the reason. */
+    private void breakOff(String reason) {
+        log.logIt("X", "The recording " + fileName + " stops here: " + reason);
+        try {
+            write(new TextLine(RecordingFormat.BROKEN).text(reason));
+            out.close();
+        } catch (IOException e) {
+            log.logIt("X", "Cannot close the recording " + fileName + ": " + e.getMessage());
+        }
+        out = null;
+    }
+
+    /**
+     * Writes the end of the run and closes the file. Call once the scheduler has stopped and no task
+     * is running: the number of model tasks run and the time are then final.
+     *
+     * @param events what was sent to the clients, for the replay to check itself against
+     */
+    public synchronized void close(EventStream events) {
+        if (out == null) {
+            return;
+        }
+        try {
+            write(new TextLine(RecordingFormat.END).integer(scheduler.modelTasksRun()).real(scheduler.recordedTime())
+                    .word("events").integer(events.count()).word("crc").word(Long.toHexString(events.checksum())));
+            out.close();
+        } catch (IOException e) {
+            log.logIt("X", "Cannot finish the recording " + fileName + ": " + e.getMessage());
+        }
+        out = null;
+    }
+}

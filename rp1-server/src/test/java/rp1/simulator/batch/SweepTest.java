@@ -1,0 +1,104 @@
+package rp1.simulator.batch;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+import rp1.Sweep;
+
+/** Sweeps refused before they start, and a run that fails among runs that do not. */
+@Timeout(60)
+class SweepTest {
+    @TempDir
+    Path dir;
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+    private int sweep(String... args) {
+        return Sweep.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8), false);
+    }
+
+    private Path write(String name, String... lines) throws IOException {
+        return Files.write(dir.resolve(name), (String.join("\n", lines) + "\n").getBytes(StandardCharsets.UTF_8));
+    }
+
+    private Path properties(String... extra) throws IOException {
+        write("home.txt", "caption: \"with home\";", "wall w { geometry: 0, 0, 4, 0, 0.05; }",
+                "placement home { geometry: 1, 1, 0, 0.2; }");
+        write("bare.txt", "caption: \"without home\";", "wall w { geometry: 0, 0, 4, 0, 0.05; }",
+                "placement elsewhere { geometry: 1, 1, 0, 0.2; }");
+        String[] lines = {"floorPlanFileName=" + dir.resolve("home.txt"), "enableGUI=false",
+            "enableNetworkClients=false", "interlockEnabled=true", "simulationSpeed=max",
+            "dlcEnabled=true", "dlcName=" + PickyDlc.class.getName()};
+        String[] all = new String[lines.length + extra.length];
+        System.arraycopy(lines, 0, all, 0, lines.length);
+        System.arraycopy(extra, 0, all, lines.length, extra.length);
+        return write("picky.ini", all);
+    }
+
+    @Test
+    void propertiesThatDoNotBoundARunAreRefusedNamingTheKeysToSet() throws Exception {
+        Path p = properties();
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1-2", "--out", dir.resolve("out").toString()));
+        assertEquals("rp1.Sweep: " + p + ": neither maxSimulationTime nor exitWhenClientsDone is set, so a run might"
+                + " never end: set maxSimulationTime=SECONDS (or exitWhenClientsDone=true)\n",
+                err.toString(StandardCharsets.UTF_8));
+        assertTrue(Files.notExists(dir.resolve("out")), "nothing was run");
+    }
+
+    @Test
+    void propertiesThatLoadNoRobotAreRefused() throws Exception {
+        Path p = write("none.ini", "floorPlanFileName=" + dir.resolve("x.txt"), "maxSimulationTime=10");
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--out", dir.resolve("out").toString()));
+        assertTrue(err.toString(StandardCharsets.UTF_8).contains("no robot is loaded: set dlcEnabled=true and"
+                + " dlcName=CLASS"), err.toString(StandardCharsets.UTF_8));
+    }
+
+    @Test
+    void aRunThatFailsIsARowWithItsReasonAndTheOtherRunsGoOn() throws Exception {
+        Path p = properties("exitWhenClientsDone=true", "maxSimulationTime=30");
+        int status = sweep("-p", p.toString(), "--seeds", "5", "--plans", dir.resolve("bare.txt") + ","
+                + dir.resolve("home.txt"), "--jobs", "2", "--out", dir.resolve("out").toString());
+        assertEquals(Sweep.RUN_FAILED, status, out.toString(StandardCharsets.UTF_8) + err);
+        List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
+        assertEquals(ResultsCsv.HEADER, rows.get(0));
+        assertEquals(3, rows.size(), rows.toString());
+        assertTrue(rows.get(1).startsWith("5," + dir.resolve("bare.txt") + ",picky,0.0,\"client failed: client "
+                + PickyDlc.class.getName() + ": a handler failed: java.lang.Error: no placement \"\"home\"\" on this"
+                + " floor plan\",2,"), rows.get(1));
+        assertTrue(rows.get(2).startsWith("5," + dir.resolve("home.txt") + ",picky,0.0,clients-done,0,1.0,1.0,0.0,0.0,0,1,"),
+                rows.get(2));
+        assertTrue(Files.exists(dir.resolve("out/runs/5-home/recording.txt")));
+        assertTrue(Files.exists(dir.resolve("out/summary.png")));
+    }
+
+    @Test
+    void aRunThatOutlivesItsTimeoutIsStoppedAndIsARowWithItsReason() throws Exception {
+        Path p = properties("exitWhenClientsDone=true", "dlcName=" + SleepyDlc.class.getName());
+        int status = sweep("-p", p.toString(), "--seeds", "2", "--timeout", "2", "--out", dir.resolve("out").toString());
+        assertEquals(Sweep.RUN_FAILED, status, out.toString(StandardCharsets.UTF_8) + err);
+        List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
+        assertTrue(rows.get(1).startsWith("2," + dir.resolve("home.txt") + ",,,timeout: still running after 2 s of"
+                + " wall time,"), rows.get(1));
+    }
+
+    @Test
+    void seedsAreRangesAndListsEachSeedOnce() {
+        assertEquals(List.of(1L, 2L, 3L, 7L), SweepOptions.seeds("1-3,7,2"));
+        assertThrows(IllegalArgumentException.class, () -> SweepOptions.seeds("3-1"));
+        assertThrows(IllegalArgumentException.class, () -> SweepOptions.seeds("a"));
+    }
+}
