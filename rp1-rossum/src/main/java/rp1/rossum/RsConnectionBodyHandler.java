@@ -8,6 +8,6 @@ public abstract class RsConnectionBodyHandler {
     public RsConnectionBodyHandler() {
     }
 
-    /** Called on the connection's reader thread when a body specification arrives. */
+    /** Called, on the thread that reads the connection (or feeds it bytes), when a body specification arrives. */
     public abstract void process(RsBody body);
 }

@@ -12,8 +12,8 @@ import rp1.simulator.snapshot.WorldSnapshot;
 
 /**
  * The floor plan's objects in declaration order, drawn by their own paint methods. A target draws
- * itself only while its live selection flag is set, which a client's reader thread may change at
- * any moment; the layer draws a private, always-selected copy of each target instead, and leaves it
+ * itself only while its live selection flag is set, which the thread running the simulation may
+ * change while the view draws; the layer draws a private, always-selected copy of each target instead, and leaves it
  * out when the snapshot says it was deselected, so the picture follows the snapshot alone.
  */
 final class PlanLayer {

@@ -33,8 +33,8 @@ public record WorldSnapshot(RsPlan plan, double simTime, List<Boolean> targetSel
     }
 
     /**
-     * The world now. Call on the thread running the simulation's tasks (robots move, parts turn hot and trails grow only
-     * there); target selection, which a client's reader thread changes, is read under the plan's lock.
+     * The world now. Call on the thread running the simulation's tasks: robots move, parts turn hot,
+     * trails grow and targets are selected only there (docs/architecture.md).
      */
     public static WorldSnapshot of(World world, double simTime) {
         List<RobotSnapshot> robots = new ArrayList<>();
@@ -47,17 +47,18 @@ public record WorldSnapshot(RsPlan plan, double simTime, List<Boolean> targetSel
         return new WorldSnapshot(world.getPlan(), simTime, targetSelection(world.getPlan()), robots, trails);
     }
 
-    /** The plan alone, before anything happened: no robots, no trails, time 0. */
+    /**
+     * The plan alone, before anything happened: no robots, no trails, time 0. Called before the run
+     * starts (the first picture a window shows) or for a plan no simulation uses.
+     */
     public static WorldSnapshot planOnly(RsPlan plan) {
         return new WorldSnapshot(plan, 0.0, targetSelection(plan), List.of(), List.of());
     }
 
     private static List<Boolean> targetSelection(RsPlan plan) {
         List<Boolean> selected = new ArrayList<>();
-        synchronized (plan) {
-            for (RsTarget t : plan.getTargetArray()) {
-                selected.add(t.getSelected());
-            }
+        for (RsTarget t : plan.getTargetArray()) {
+            selected.add(t.getSelected());
         }
         return selected;
     }
