@@ -50,7 +50,7 @@ class GuideStyleClientTest {
         server.setInputOutputStreams(toServer.getInputStream(), toClient.getOutputStream());
         GuideStyleClient client = new GuideStyleClient();
         client.setInputOutputStreams(toClient.getInputStream(), toServer.getOutputStream());
-        client.setLogger(null);
+        client.setLogger(rp1.rossum.QuietLog.INSTANCE);
         new Thread(server).start();
         client.initialize();
         Thread loop = new Thread(client);

@@ -260,7 +260,7 @@ class ClientEventLoopTest {
 
     static RsClient quietClient() {
         RsClient c = new RsClient();
-        c.setLogger(null);
+        c.setLogger(QuietLog.INSTANCE);
         return c;
     }
 

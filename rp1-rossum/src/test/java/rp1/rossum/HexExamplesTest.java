@@ -23,6 +23,7 @@ class HexExamplesTest {
     void clientHandshakeSendsConnectWithSequenceZeroAndAdoptsTheAcceptIdentity() throws Exception {
         ByteArrayOutputStream sent = new ByteArrayOutputStream();
         RsClient client = new RsClient();
+        client.setLogger(QuietLog.INSTANCE);
         client.setInputOutputStreams(new ByteArrayInputStream(Hex.bytes("00000000 00000007 0000002a 00000001 00000002")), sent);
         client.exchangeIntroductions();
         assertEquals(Hex.of(Hex.bytes(CONNECT)), Hex.of(sent.toByteArray()));
@@ -89,6 +90,7 @@ class HexExamplesTest {
         byte[] event = Hex.bytes("00000000 00000000 00000000 00000005 00000003 00000005 00000000 4004000000000000 00000002 00000001");
         ByteArrayOutputStream sent = new ByteArrayOutputStream();
         RsClient client = new RsClient();
+        client.setLogger(QuietLog.INSTANCE);
         client.setInputOutputStreams(new ByteArrayInputStream(event), sent);
         client.run();
         assertEquals(Hex.of(Hex.bytes("00000000 00000000 00000000 00000001 00000006 00000002")), Hex.of(sent.toByteArray()));
@@ -133,6 +135,7 @@ class HexExamplesTest {
     private static byte[] afterHandshake(ClientAction action) throws Exception {
         ByteArrayOutputStream sent = new ByteArrayOutputStream();
         RsClient client = new RsClient();
+        client.setLogger(QuietLog.INSTANCE);
         client.setInputOutputStreams(new ByteArrayInputStream(Hex.bytes(ACCEPT)), sent);
         client.exchangeIntroductions();
         action.run(client);

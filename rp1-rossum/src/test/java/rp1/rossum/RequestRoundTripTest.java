@@ -29,7 +29,7 @@ class RequestRoundTripTest {
 
     static Link link(String transport) throws Exception {
         RsClient client = new RsClient();
-        client.setLogger(null);
+        client.setLogger(QuietLog.INSTANCE);
         RsConnection connection = new RsConnection();
         switch (transport) {
             case "socket":

@@ -35,7 +35,7 @@ class SplitFrameTest {
     private static List<String> decode(InputStream in) {
         List<String> seen = new ArrayList<>();
         RsClient client = new RsClient();
-        client.setLogger(null);
+        client.setLogger(QuietLog.INSTANCE);
         client.addPlacementEventHandler(e -> seen.add(describe(e) + e.name + e.x + e.orientation));
         client.addTimeoutEventHandler(e -> seen.add(describe(e) + e.timeoutIndex));
         client.setInputOutputStreams(in, new ByteArrayOutputStream());

@@ -20,6 +20,7 @@ import rp1.rossum.RsNavLink;
 import rp1.rossum.RsNavNode;
 import rp1.rossum.RsObject;
 import rp1.rossum.RsClient;
+import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsConnection;
 import rp1.rossum.RsPaint;
 import rp1.rossum.RsPipe;
@@ -60,7 +61,12 @@ class PlanRoundTripTest {
         connection.setLogger(null);
         connection.setInputOutputStreams(toServer.getInputStream(), toClient.getOutputStream());
         RsClient client = new RsClient();
-        client.setLogger(null);
+        client.setLogger(new RsLogAdapter() {
+            @Override
+            public void logIt(String level, String message) {
+                // the notice that the session ended when the test closes it
+            }
+        });
         client.setInputOutputStreams(toClient.getInputStream(), toServer.getOutputStream());
         BlockingQueue<RsPlanEvent> received = new LinkedBlockingQueue<>();
         client.addPlanEventHandler(received::add);

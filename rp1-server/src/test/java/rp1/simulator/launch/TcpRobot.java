@@ -12,6 +12,8 @@ import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsBodyPainter;
 import rp1.rossum.RsClient;
 import rp1.rossum.RsDifferentialSteering;
+import rp1.rossum.RsLogAdapter;
+import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsProperties;
 import rp1.rossum.event.RsEvent;
 
@@ -21,6 +23,13 @@ import rp1.rossum.event.RsEvent;
  * the library does) and runs its event loop on a thread of its own.
  */
 final class TcpRobot extends RsClient {
+    /** Swallows the library's log, such as the notice that the server closed the connection at the end of a test. */
+    private static final RsLogInterface QUIET = new RsLogAdapter() {
+        @Override
+        public void logIt(String level, String message) {
+        }
+    };
+
     private final List<RsEvent> events = new ArrayList<>();
     private RsBodyPainter pen;
 
@@ -36,7 +45,7 @@ final class TcpRobot extends RsClient {
 
     private static TcpRobot connect(int port, String name, boolean withPen) throws IOException {
         TcpRobot robot = new TcpRobot();
-        robot.setLogger(null);
+        robot.setLogger(QUIET);
         RsProperties p = new RsProperties();
         p.hostName = "127.0.0.1";
         p.port = port;
