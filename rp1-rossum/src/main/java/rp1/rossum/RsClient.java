@@ -69,9 +69,6 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /** The configuration {@link #initialize()} uses; created there if still null. */
     public RsProperties rsProperties;
 
-    /** Requests after a direct session has ended: dropped, as over a closed stream. */
-    private static final RequestSink DROPPED = DroppedRequests.INSTANCE;
-
     private final HandlerRegistry registry = new HandlerRegistry();
     private final RequestSink wire = new WireRequests();
     private volatile DirectLink link;
@@ -590,10 +587,8 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      */
     private RequestSink requests() {
         DirectLink l = link;
-        if (l == null) {
-            return wire;
-        }
-        return isClosed() ? DROPPED : l.requests();
+        // After the session has ended, the wire path drops requests with a log line, whichever link it had.
+        return l == null || isClosed() ? wire : l.requests();
     }
 
     /** Whether requests can be sent: the streams are set, or a direct link is. */
