@@ -66,10 +66,7 @@ public final class Replay {
                 Pictures.writePng(Pictures.render(renderer, snapshot), o.snapshot);
             }
             return report(recording, outcome, o, out, err);
-        } catch (RecordingException e) {
-            err.println("rp1.Replay: " + e.getMessage());
-            return 1;
-        } catch (IOException e) {
+        } catch (RecordingException | IOException e) {
             err.println("rp1.Replay: " + e.getMessage());
             return 1;
         }

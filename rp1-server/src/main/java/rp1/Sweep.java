@@ -6,6 +6,7 @@ import java.io.PrintStream;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -84,15 +85,18 @@ public final class Sweep {
     /** One panel per plan, with the trails of its runs in the colour of their seed. */
     private static List<SweepPicture.Panel> panels(Map<String, RsPlan> plans, List<Batch.Outcome> outcomes,
                                                    List<Long> seeds) {
+        Map<Long, Integer> seedIndex = new HashMap<>();
+        for (int i = 0; i < seeds.size(); i++) {
+            seedIndex.putIfAbsent(seeds.get(i), i);
+        }
+        Map<String, List<SweepPicture.RunTrails>> runsByPlan = new HashMap<>();
+        for (Batch.Outcome o : outcomes) {
+            runsByPlan.computeIfAbsent(o.run().plan(), k -> new ArrayList<>())
+                    .add(trails(o, SweepPicture.colour(seedIndex.get(o.run().seed()))));
+        }
         List<SweepPicture.Panel> panels = new ArrayList<>();
         for (Map.Entry<String, RsPlan> plan : plans.entrySet()) {
-            List<SweepPicture.RunTrails> runs = new ArrayList<>();
-            for (Batch.Outcome o : outcomes) {
-                if (o.run().plan().equals(plan.getKey())) {
-                    runs.add(trails(o, SweepPicture.colour(seeds.indexOf(o.run().seed()))));
-                }
-            }
-            panels.add(new SweepPicture.Panel(plan.getValue(), runs));
+            panels.add(new SweepPicture.Panel(plan.getValue(), runsByPlan.getOrDefault(plan.getKey(), List.of())));
         }
         return panels;
     }

@@ -59,11 +59,6 @@ public class Bumper extends RsClient implements RsRunnable {
         sendPlacementRequest("$random");
     }
 
-    /** How many times it has bumped into something. */
-    public synchronized int getBumps() {
-        return bumps;
-    }
-
     private synchronized void placed(RsPlacementEvent e) {
         if (!e.valid) {
             sendPlacementRequest("$random");

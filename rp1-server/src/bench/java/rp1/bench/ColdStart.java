@@ -6,10 +6,10 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.Paths;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+
+import rp1.simulator.launch.JavaCommand;
 
 /**
  * A freshly started server answering its first clients: {@code java rp1.Server} started as a new
@@ -30,9 +30,7 @@ final class ColdStart {
             Files.write(dir.resolve("cold.ini"), String.join("\n", "floorPlanFileName=WhiteRoom.txt", "enableGUI=false",
                     "port=" + PORT, "randomSeed=1", "").getBytes(
                     StandardCharsets.UTF_8));
-            List<String> command = new ArrayList<>(List.of(Paths.get(System.getProperty("java.home"), "bin", "java")
-                    .toString(), "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"),
-                    "rp1.Server", "-p", "cold.ini"));
+            List<String> command = JavaCommand.of(List.of(), "rp1.Server", "-p", "cold.ini");
             long launched = System.nanoTime();
             Process server = new ProcessBuilder(command).directory(dir.toFile())
                     .redirectOutput(dir.resolve("out.txt").toFile()).redirectErrorStream(true).start();

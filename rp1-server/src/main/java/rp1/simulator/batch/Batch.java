@@ -25,6 +25,8 @@ import rp1.rossum.RsPlan;
 import rp1.simulator.config.ConfigException;
 import rp1.simulator.config.ResourceLocator;
 import rp1.simulator.config.ServerConfig;
+import rp1.simulator.launch.ExitStatus;
+import rp1.simulator.launch.JavaCommand;
 
 /**
  * Runs a server's properties over several seeds and floor plans, each (seed, plan) a headless world
@@ -34,12 +36,14 @@ import rp1.simulator.config.ServerConfig;
  * spread over several machines. A run that fails is a row with its reason; the others go on.
  */
 public final class Batch {
-    /** Each run's recording, event log and end picture, in its folder. */
-    public static final String RECORDING = "recording.txt";
-    public static final String EVENTS = "events.txt";
-    public static final String PICTURE = "end.png";
+    /** Each run's recording, event log and end picture, in its folder (docs/guide.md names them). */
+    private static final String RECORDING = "recording.txt";
+    private static final String EVENTS = "events.txt";
+    private static final String PICTURE = "end.png";
     /** What the run's process printed. */
-    public static final String OUTPUT = "output.txt";
+    private static final String OUTPUT = "output.txt";
+    /** How long a run that is asked to stop may take to close its files before it is killed. */
+    private static final long STOP_GRACE_SECONDS = 10;
 
     private final SweepOptions options;
     private final Path out;
@@ -186,33 +190,55 @@ public final class Batch {
         return outcomes;
     }
 
-    /** One run in a process of its own, stopped if it takes longer than the timeout. */
-    private Outcome execute(Run run) throws IOException, InterruptedException {
+    /**
+     * One run in a process of its own, stopped if it takes longer than the timeout. A run that cannot
+     * even be started (its folder cannot be written, no process) is a row with the reason too.
+     */
+    private Outcome execute(Run run) throws InterruptedException {
+        long start = System.nanoTime();
+        RunReport report;
+        try {
+            report = runProcess(run);
+        } catch (IOException e) {
+            report = RunReport.failed("the run could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED);
+        }
+        double wall = (System.nanoTime() - start) * 1e-9;
+        return new Outcome(run, report, wall, trails(run));
+    }
+
+    private RunReport runProcess(Run run) throws IOException, InterruptedException {
         Files.createDirectories(run.dir());
         Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
         Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
         Files.write(run.dir().resolve(SweepRun.PROPERTIES), properties(run).getBytes(StandardCharsets.UTF_8));
-        long start = System.nanoTime();
-        Process p = new ProcessBuilder(command(run)).redirectErrorStream(true)
+        Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(),
+                run.dir().toAbsolutePath().toString())).redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
         boolean ended;
         try {
             ended = p.waitFor((long) (options.timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
         } catch (InterruptedException e) {
-            p.destroyForcibly();
+            stop(p);
             throw e;
         }
-        RunReport report;
         if (!ended) {
+            stop(p);
+            return RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
+                    options.timeoutSeconds), p.exitValue());
+        }
+        return report(run, p.exitValue());
+    }
+
+    /**
+     * Stops a run as Ctrl-C would, so that it closes its recording and event log (the rows worth
+     * replaying are often these); forcibly if it has not stopped within a grace period.
+     */
+    private static void stop(Process p) throws InterruptedException {
+        p.destroy();
+        if (!p.waitFor(STOP_GRACE_SECONDS, TimeUnit.SECONDS)) {
             p.destroyForcibly();
             p.waitFor();
-            report = RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
-                    options.timeoutSeconds), p.exitValue());
-        } else {
-            report = report(run, p.exitValue());
         }
-        double wall = (System.nanoTime() - start) * 1e-9;
-        return new Outcome(run, report, wall, trails(run));
     }
 
     private static RunReport report(Run run, int status) {
@@ -263,12 +289,5 @@ public final class Batch {
                 + "eventLogFileName=" + d.resolve(EVENTS) + "\n"
                 + "snapshotFileName=" + d.resolve(PICTURE) + "\n"
                 + "snapshotInterval=0\n";
-    }
-
-    /** This Java, this class path, headless, {@link SweepRun} on the run's folder. */
-    private static List<String> command(Run run) {
-        String java = Paths.get(System.getProperty("java.home"), "bin", "java").toString();
-        return List.of(java, "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"),
-                SweepRun.class.getName(), run.dir().toAbsolutePath().toString());
     }
 }

@@ -1,18 +1,16 @@
 package rp1.simulator.batch;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.List;
 
 import rp1.simulator.Simulation;
-import rp1.simulator.config.ServerConfig;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.LaunchOptions;
 import rp1.simulator.launch.RunningServer;
 import rp1.simulator.launch.ServerLauncher;
+import rp1.simulator.launch.ServerMain;
 import rp1.simulator.launch.StartupException;
 import rp1.simulator.launch.ViewHook;
 
@@ -54,14 +52,9 @@ public final class SweepRun {
         } catch (StartupException e) {
             return report(RunReport.failed("startup failed: " + e.getMessage(), e.getExitStatus()));
         }
-        int status;
-        try {
-            status = server.awaitExit();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return report(RunReport.failed("interrupted", ExitStatus.STARTUP_FAILED));
-        }
-        return report(new RunReport(endTime, reason(status, server.getConfig()), status, robots));
+        // Stopped by the sweep (a timeout), the run still closes its recording and event log.
+        int status = ServerMain.awaitExit(server);
+        return report(new RunReport(endTime, server.getStopReason(), status, robots));
     }
 
     /**
@@ -77,31 +70,6 @@ public final class SweepRun {
             robots = statistics.results(simulation.getWorld());
             view.close();
         };
-    }
-
-    private String reason(int status, ServerConfig config) {
-        if (status == ExitStatus.CLIENT_FAILED) {
-            return "client failed: " + firstFailure();
-        }
-        if (status != ExitStatus.OK) {
-            return "exit status " + status;
-        }
-        return endTime >= config.maxSimulationTime ? "max-simulation-time" : "clients-done";
-    }
-
-    /** The first line of the server's log that says what failed. */
-    private String firstFailure() {
-        try {
-            for (String line : Files.readAllLines(dir.resolve(LOG), StandardCharsets.UTF_8)) {
-                String[] parts = line.split(" ", 4);
-                if (parts.length == 4 && parts[3].contains("failed:")) {
-                    return parts[3];
-                }
-            }
-        } catch (IOException e) {
-            return "see " + dir.resolve(LOG) + " (" + e.getMessage() + ")";
-        }
-        return "see " + dir.resolve(LOG);
     }
 
     private int report(RunReport report) {

@@ -39,11 +39,11 @@ import rp1.simulator.net.Transport;
 final class ClientLauncher implements LoadedClient.Listener {
     /** What the server does when clients fail or finish. */
     interface Outcome {
-        /** A client's {@code initialize()} threw. */
-        void clientFailed();
+        /** A client's {@code initialize()} threw; {@code failure} says so as the log did. */
+        void clientFailed(String failure);
 
-        /** Every client's thread has ended; {@code anyFailed} if one of them failed. */
-        void allFinished(boolean anyFailed);
+        /** Every client's thread has ended; {@code firstFailure} is the first that failed, or null. */
+        void allFinished(String firstFailure);
     }
 
     private final List<LoadedClient> clients;
@@ -173,22 +173,22 @@ final class ClientLauncher implements LoadedClient.Listener {
 
     @Override
     public void initializeFailed(LoadedClient client) {
-        outcome.clientFailed();
+        outcome.clientFailed(client.failure());
     }
 
     @Override
     public void finished(LoadedClient client) {
         if (running.decrementAndGet() == 0) {
-            outcome.allFinished(anyFailed());
+            outcome.allFinished(firstFailure());
         }
     }
 
-    private boolean anyFailed() {
+    private String firstFailure() {
         for (LoadedClient c : clients) {
-            if (c.hasFailed()) {
-                return true;
+            if (c.failure() != null) {
+                return c.failure();
             }
         }
-        return false;
+        return null;
     }
 }

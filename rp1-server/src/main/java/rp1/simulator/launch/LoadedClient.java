@@ -36,7 +36,8 @@ final class LoadedClient {
     /** Whether the simulation calls the client's handlers directly (no event loop, no thread after initialize()). */
     private volatile boolean direct;
     private volatile ClientConnection directConnection;
-    private volatile boolean failed;
+    /** What failed, as the log said it, or null while nothing has. */
+    private volatile String failure;
     private final AtomicBoolean done = new AtomicBoolean();
 
     private LoadedClient(String className, RsRunnable client) {
@@ -143,8 +144,7 @@ final class LoadedClient {
      */
     void sessionEnded(ServerLog log, Listener listener, Throwable failure) {
         if (failure != null) {
-            failed = true;
-            log.important("client " + className + ": a handler failed: " + describe(failure));
+            fail(log, "a handler failed: " + describe(failure));
         }
         finish(listener);
     }
@@ -164,8 +164,7 @@ final class LoadedClient {
         try {
             client.initialize();
         } catch (Throwable t) {
-            failed = true;
-            log.important("client " + className + ": initialize() failed: " + describe(t));
+            fail(log, "initialize() failed: " + describe(t));
             listener.initializeFailed(this);
             finish(listener);
             return;
@@ -179,8 +178,7 @@ final class LoadedClient {
             client.run();
             log.log("client " + className + ": run() returned");
         } catch (Throwable t) {
-            failed = true;
-            log.important("client " + className + ": run() failed: " + describe(t));
+            fail(log, "run() failed: " + describe(t));
         } finally {
             finish(listener);
         }
@@ -202,8 +200,14 @@ final class LoadedClient {
         listener.finished(this);
     }
 
-    boolean hasFailed() {
-        return failed;
+    private void fail(ServerLog log, String what) {
+        failure = "client " + className + ": " + what;
+        log.important(failure);
+    }
+
+    /** What failed (the log's line), or null if the client has not failed. */
+    String failure() {
+        return failure;
     }
 
     /**
@@ -217,7 +221,7 @@ final class LoadedClient {
             return false;
         }
         InProcessClient l = link;
-        return l == null || failed
+        return l == null || failure != null
                 || l.awaitDrained(Math.max(0L, TimeUnit.NANOSECONDS.toMillis(deadlineNanos - System.nanoTime())));
     }
 }

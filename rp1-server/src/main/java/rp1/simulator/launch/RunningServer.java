@@ -29,6 +29,7 @@ public final class RunningServer {
     private final AtomicBoolean stopping = new AtomicBoolean();
     private final CountDownLatch exited = new CountDownLatch(1);
     private volatile int exitStatus = ExitStatus.OK;
+    private volatile String stopReason = "running";
     private volatile AutoCloseable view = () -> { };
 
     /** What {@link ServerLauncher} built, handed over to run. */
@@ -114,7 +115,7 @@ public final class RunningServer {
         }
         parts.simulation.stopAt(max, () -> {
             parts.log.log("maxSimulationTime " + max + " s reached");
-            requestStop(ExitStatus.OK);
+            requestStop(ExitStatus.OK, "max-simulation-time");
         });
     }
 
@@ -130,15 +131,19 @@ public final class RunningServer {
     /** How loaded clients end the server. */
     private final class ClientOutcome implements ClientLauncher.Outcome {
         @Override
-        public void clientFailed() {
-            requestStop(ExitStatus.CLIENT_FAILED);
+        public void clientFailed(String failure) {
+            requestStop(ExitStatus.CLIENT_FAILED, "client failed: " + failure);
         }
 
         @Override
-        public void allFinished(boolean anyFailed) {
+        public void allFinished(String firstFailure) {
             if (parts.config.exitWhenClientsDone) {
                 parts.log.log("Every loaded client has finished (exitWhenClientsDone)");
-                requestStop(anyFailed ? ExitStatus.CLIENT_FAILED : ExitStatus.OK);
+                if (firstFailure == null) {
+                    requestStop(ExitStatus.OK, "clients-done");
+                } else {
+                    requestStop(ExitStatus.CLIENT_FAILED, "client failed: " + firstFailure);
+                }
             }
         }
     }
@@ -168,9 +173,14 @@ public final class RunningServer {
      * status. Safe from any thread, including the scheduler's and a client's.
      */
     public void requestStop(int status) {
+        requestStop(status, "stopped");
+    }
+
+    private void requestStop(int status, String reason) {
         if (!stopping.compareAndSet(false, true)) {
             return;
         }
+        stopReason = reason;
         Thread t = new Thread(() -> shutDown(status), "shutdown");
         t.start();
     }
@@ -190,6 +200,15 @@ public final class RunningServer {
     /** Waits at most {@code timeout}; the exit status if the server stopped by then. */
     public OptionalInt awaitExit(long timeout, TimeUnit unit) throws InterruptedException {
         return exited.await(timeout, unit) ? OptionalInt.of(exitStatus) : OptionalInt.empty();
+    }
+
+    /**
+     * Why the server stopped (or is stopping): {@code max-simulation-time}, {@code clients-done},
+     * {@code client failed: WHAT}, or {@code stopped} (asked to: the window, a signal, a caller);
+     * {@code running} before that.
+     */
+    public String getStopReason() {
+        return stopReason;
     }
 
     /** Whether the server has stopped. */

@@ -34,8 +34,15 @@ public final class ServerMain {
             System.err.println("rp1.Server: " + e.getMessage());
             return e.getExitStatus();
         }
-        Thread hook = new Thread(() -> stopQuietly(server), "shutdown hook");
-        Runtime.getRuntime().addShutdownHook(hook);
+        return awaitExit(server);
+    }
+
+    /**
+     * Waits until {@code server} stops; Ctrl-C or SIGTERM meanwhile stop it cleanly first (clients
+     * closed, log, recording and event log flushed). Returns the exit status.
+     */
+    public static int awaitExit(RunningServer server) {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> stopQuietly(server), "shutdown hook"));
         try {
             return server.awaitExit();
         } catch (InterruptedException e) {

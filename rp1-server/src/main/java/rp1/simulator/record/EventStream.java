@@ -1,8 +1,8 @@
 package rp1.simulator.record;
 
-import java.io.BufferedWriter;
+import java.io.BufferedOutputStream;
 import java.io.IOException;
-import java.io.Writer;
+import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -20,17 +20,17 @@ import rp1.simulator.session.ClientSession;
  */
 public final class EventStream implements Simulation.EventListener {
     /** The version of the event log's line format: raise it when a line changes. */
-    public static final int VERSION = 1;
+    private static final int VERSION = 1;
     /** The first line of every event log. */
-    public static final String HEADER = "# rp1-events " + VERSION;
+    private static final String HEADER = "# rp1-events " + VERSION;
 
     private final CRC32 checksum = new CRC32();
     private final RsLogInterface log;
     private final String fileName;
-    private Writer out;
+    private OutputStream out;
     private long count;
 
-    private EventStream(Writer out, String fileName, RsLogInterface log) {
+    private EventStream(OutputStream out, String fileName, RsLogInterface log) {
         this.out = out;
         this.fileName = fileName;
         this.log = log;
@@ -47,9 +47,8 @@ public final class EventStream implements Simulation.EventListener {
      * @param log where a failure to write is reported (the run goes on without the log)
      */
     public static EventStream toFile(Path file, RsLogInterface log) throws IOException {
-        Writer w = new BufferedWriter(Files.newBufferedWriter(file, StandardCharsets.UTF_8), 1 << 16);
-        w.write(HEADER);
-        w.write('\n');
+        OutputStream w = new BufferedOutputStream(Files.newOutputStream(file), 1 << 16);
+        w.write((HEADER + '\n').getBytes(StandardCharsets.UTF_8));
         return new EventStream(w, file.toString(), log);
     }
 
@@ -58,8 +57,9 @@ public final class EventStream implements Simulation.EventListener {
         if (!delivered) {
             return;
         }
-        String line = EventText.line(session.getNumber(), event) + '\n';
-        checksum.update(line.getBytes(StandardCharsets.UTF_8));
+        // One encoding serves the checksum and the file.
+        byte[] line = (EventText.line(session.getNumber(), event) + '\n').getBytes(StandardCharsets.UTF_8);
+        checksum.update(line);
         count++;
         if (out != null) {
             try {
@@ -84,7 +84,7 @@ public final class EventStream implements Simulation.EventListener {
     /** Flushes and closes the event log, if any. */
     public synchronized void close() throws IOException {
         if (out != null) {
-            Writer w = out;
+            OutputStream w = out;
             out = null;
             w.close();
         }

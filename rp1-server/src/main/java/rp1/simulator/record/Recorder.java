@@ -1,6 +1,5 @@
 package rp1.simulator.record;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
@@ -47,7 +46,7 @@ public final class Recorder implements InputQueue.Listener {
      * simulation's input queue before the run starts.
      */
     public static Recorder open(Path file, Header header, Scheduler scheduler, RsLogInterface log) throws IOException {
-        Writer w = new BufferedWriter(Files.newBufferedWriter(file, StandardCharsets.UTF_8), 1 << 16);
+        Writer w = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
         Recorder r = new Recorder(w, file.toString(), scheduler, log);
         try {
             r.writeHeader(header);

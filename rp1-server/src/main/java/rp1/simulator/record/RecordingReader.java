@@ -62,8 +62,7 @@ public final class RecordingReader {
 
     private Recording parse() throws RecordingException {
         header();
-        while (next < lines.size()) {
-            LineCursor in = cursor();
+        for (LineCursor in = nextLine(); in != null; in = nextLine()) {
             if (end != null) {
                 throw in.error("nothing may follow the end of the run (line " + end.line() + ")");
             }

@@ -75,6 +75,19 @@ class RecordingReaderTest {
         assertEquals(new Recording.End(11, 3, 1.5, 1, 0x1f), r.end());
     }
 
+    @Test
+    void commentsMayStandAnywhereAfterTheHeaderEvenLast() throws Exception {
+        String[] lines = sound();
+        String[] commented = new String[lines.length + 2];
+        System.arraycopy(lines, 0, commented, 0, 9);
+        commented[9] = "# a note between two inputs";
+        System.arraycopy(lines, 9, commented, 10, lines.length - 9);
+        commented[commented.length - 1] = "# a note after the end";
+        Recording r = parse(commented);
+        assertEquals(2, r.steps().size());
+        assertEquals(3, r.end().tasks());
+    }
+
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
         "9 | input x 0.0 1 halt | run.rec:9: the task number: an integer was expected, found \"x\"",
