@@ -85,10 +85,6 @@ public final class Simulation {
         return t + (trace.length > 0 ? " at " + trace[0] : "");
     }
 
-    public SimulationSettings getSettings() {
-        return settings;
-    }
-
     public Scheduler getScheduler() {
         return scheduler;
     }
@@ -100,11 +96,6 @@ public final class Simulation {
     /** The inputs waiting for the next boundary (a recording listens to them). */
     public InputQueue getInputs() {
         return inputs;
-    }
-
-    /** The interlock, or null when it is off. */
-    public Interlock getInterlock() {
-        return interlock;
     }
 
     public RsLogInterface getLog() {

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
+import java.util.Locale;
 import java.util.OptionalLong;
 import java.util.Properties;
 import java.util.SortedMap;
@@ -65,8 +66,18 @@ public final class ServerConfig {
     public final boolean robotsInteract;
     /** Robots to be placed before simulated time may run (default 1 with only network clients, else 0). */
     public final int waitForClients;
-    /** How loaded clients get their events: "auto", "direct" or "pipes". */
-    public final String dlcDelivery;
+    /** How loaded clients get their events ({@code dlcDelivery}). */
+    public enum Delivery {
+        /** Directly where the client allows it, else through pipes. */
+        AUTO,
+        /** Directly; a client that does not allow it fails start-up. */
+        DIRECT,
+        /** Through pipes, as in RP1 0.60. */
+        PIPES
+    }
+
+    /** How loaded clients get their events. */
+    public final Delivery dlcDelivery;
     /** Where to write a recording of the run, to replay it (docs/recording.md), or null. */
     public final String recordFileName;
     /** Where to write every event sent to a client, one line each (docs/recording.md), or null. */
@@ -105,7 +116,7 @@ public final class ServerConfig {
         snapshotInterval = r.real("snapshotInterval", 0.0, 0.0, Double.POSITIVE_INFINITY);
         robotsInteract = r.bool(true, "robotsInteract");
         waitForClients = r.integer("waitForClients", enableNetworkClients && !dlcEnabled ? 1 : 0, 0, Integer.MAX_VALUE);
-        dlcDelivery = r.choice("dlcDelivery", "auto", "auto", "direct", "pipes");
+        dlcDelivery = Delivery.valueOf(r.choice("dlcDelivery", "auto", "auto", "direct", "pipes").toUpperCase(Locale.ROOT));
         recordFileName = r.string("recordFileName");
         eventLogFileName = r.string("eventLogFileName");
         given = r.given();

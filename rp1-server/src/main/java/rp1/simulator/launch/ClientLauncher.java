@@ -72,7 +72,7 @@ final class ClientLauncher implements LoadedClient.Listener {
                 log.log("Loading class for client: \"" + name + "\"");
                 LoadedClient c = LoadedClient.create(name, loader);
                 String whyNot = c.whyNotDirect();
-                if (whyNot != null && config.dlcSetIO && config.dlcDelivery.equals("direct")) {
+                if (whyNot != null && config.dlcSetIO && config.dlcDelivery == ServerConfig.Delivery.DIRECT) {
                     throw new StartupException("dlcDelivery=direct, but client class " + name + " cannot be called directly: "
                             + whyNot + " (use dlcDelivery=auto or pipes)");
                 }
@@ -94,7 +94,7 @@ final class ClientLauncher implements LoadedClient.Listener {
     void launch(Simulation simulation, ClientRegistry registry, int port, Outcome whenDone) throws IOException {
         outcome = whenDone;
         for (LoadedClient c : clients) {
-            if (config.dlcSetIO && !config.dlcDelivery.equals("pipes") && c.whyNotDirect() == null) {
+            if (config.dlcSetIO && config.dlcDelivery != ServerConfig.Delivery.PIPES && c.whyNotDirect() == null) {
                 connectDirect(c, simulation, registry);
             } else if (config.dlcSetIO) {
                 connectInProcess(c, simulation, registry);

@@ -16,8 +16,9 @@ import rp1.simulator.net.InProcessClient;
 
 /**
  * One dynamically loaded client (behavior.md section 3.4): an {@link RsRunnable} created from a class
- * name with its public no-argument constructor, then connected, initialized and run on a thread of
- * its own. Records whether it failed.
+ * name with its public no-argument constructor, then connected and initialized on a thread of its own,
+ * which then runs its event loop ({@code run()}), unless the simulation calls its handlers directly.
+ * Records whether it failed.
  */
 final class LoadedClient {
     /** How a loaded client's thread ended, reported once. */
@@ -25,7 +26,10 @@ final class LoadedClient {
         /** {@code initialize()} threw: the client never ran. */
         void initializeFailed(LoadedClient client);
 
-        /** The thread ended: {@code run()} returned or threw, or initialization failed. */
+        /**
+         * The client is done: {@code run()} returned or threw, initialization failed, or (called
+         * directly) its session ended, on whichever thread ended it.
+         */
         void finished(LoadedClient client);
     }
 
@@ -33,8 +37,9 @@ final class LoadedClient {
     final RsRunnable client;
     private final CountDownLatch initialized = new CountDownLatch(1);
     private volatile InProcessClient link;
-    /** Whether the simulation calls the client's handlers directly (no event loop, no thread after initialize()). */
-    private volatile boolean direct;
+    /** Why the simulation cannot call the client's handlers directly, or null if it can. */
+    private final String whyNotDirect;
+    /** Set when the simulation calls the client's handlers directly (no event loop, no thread after initialize()). */
     private volatile ClientConnection directConnection;
     /** What failed, as the log said it, or null while nothing has. */
     private volatile String failure;
@@ -43,6 +48,7 @@ final class LoadedClient {
     private LoadedClient(String className, RsRunnable client) {
         this.className = className;
         this.client = client;
+        this.whyNotDirect = whyNotDirect(client);
     }
 
     /**
@@ -107,11 +113,15 @@ final class LoadedClient {
      * neither {@code run()} nor {@code setInputOutputStreams}).
      */
     String whyNotDirect() {
+        return whyNotDirect;
+    }
+
+    private static String whyNotDirect(RsRunnable client) {
         if (!(client instanceof RsClient)) {
             return "it is not an " + RsClient.class.getName();
         }
         for (String method : new String[] {"run", "setInputOutputStreams"}) {
-            Class<?> declaring = declaringClass(method);
+            Class<?> declaring = declaringClass(client, method);
             if (declaring != RsClient.class && declaring != RsProtocol.class) {
                 return "it overrides " + method + "() (in " + declaring.getName() + ")";
             }
@@ -119,7 +129,7 @@ final class LoadedClient {
         return null;
     }
 
-    private Class<?> declaringClass(String method) {
+    private static Class<?> declaringClass(RsRunnable client, String method) {
         for (Method m : client.getClass().getMethods()) {
             if (m.getName().equals(method) && !m.isBridge()) {
                 return m.getDeclaringClass();
@@ -131,11 +141,6 @@ final class LoadedClient {
     /** The simulation calls this client's handlers directly, through {@code connection}: after initialize() its thread ends. */
     void setDirect(ClientConnection connection) {
         this.directConnection = connection;
-        this.direct = true;
-    }
-
-    boolean isDirect() {
-        return direct;
     }
 
     /**
@@ -171,7 +176,7 @@ final class LoadedClient {
         } finally {
             initialized.countDown();
         }
-        if (direct) {
+        if (directConnection != null) {
             return;
         }
         try {

@@ -13,8 +13,10 @@ import rp1.simulator.net.ClientRegistry;
 import rp1.simulator.record.RunRecords;
 
 /**
- * A server that has started: its threads (scheduler, listener, a reader and a writer per client, one
- * per loaded client, behavior.md section 3.2) are running. It stops when asked ({@link #stop()},
+ * A server that has started: its threads (the scheduler's dispatch loop, the network thread, a reader
+ * per client over pipes, a thread per loaded client until it is called directly or its {@code run()}
+ * returns, a writer for a client that falls behind; behavior.md section 3.2, docs/architecture.md)
+ * are running. It stops when asked ({@link #stop()},
  * Ctrl-C through {@code rp1.Server}'s shutdown hook, the view's exit), at {@code maxSimulationTime},
  * when every loaded client is done ({@code exitWhenClientsDone}), or when a loaded client fails to
  * initialize. Stopping closes every client, stops the scheduler, finishes the recording and event log

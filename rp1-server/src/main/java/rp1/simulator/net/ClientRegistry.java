@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import rp1.rossum.RsLogInterface;
@@ -63,9 +64,11 @@ public final class ClientRegistry {
         for (ClientConnection c : all) {
             c.close(reason);
         }
+        // One second for them all, not each: a server with hundreds of clients still stops at once.
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(1);
         try {
             for (ClientConnection c : all) {
-                c.awaitEnded(1000);
+                c.awaitEnded(Math.max(0L, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

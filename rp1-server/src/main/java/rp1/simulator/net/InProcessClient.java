@@ -8,7 +8,6 @@ import rp1.rossum.RsConnection;
 import rp1.rossum.RsPipe;
 import rp1.rossum.RsRunnable;
 import rp1.simulator.Simulation;
-import rp1.simulator.session.ClientSession;
 
 /**
  * A client connected to a simulation in the same process through a pair of {@link RsPipe}s, with no
@@ -18,11 +17,8 @@ import rp1.simulator.session.ClientSession;
  * and {@code run()}.
  */
 public final class InProcessClient {
-    private final RsRunnable client;
     private final RsPipe toServer = new RsPipe();
     private final RsPipe toClient = new RsPipe();
-    private final RsConnection connection;
-    private final ClientSession session;
 
     /**
      * Connects {@code client} to {@code simulation}: the connection is attached and its reader thread
@@ -40,10 +36,8 @@ public final class InProcessClient {
      */
     public InProcessClient(Simulation simulation, RsRunnable client, String description, boolean shareLog,
                            RsConnection connection, Function<RsPipe, OutputStream> outbound) {
-        this.client = client;
-        this.connection = connection;
         connection.setInputOutputStreams(toServer.getInputStream(), outbound.apply(toClient));
-        session = simulation.attach(connection, description, Simulation.Link.READER);
+        simulation.attach(connection, description, Simulation.Link.READER);
         Thread reader = new Thread(connection, "connection " + description);
         reader.setDaemon(true);
         reader.start();
@@ -51,14 +45,6 @@ public final class InProcessClient {
         if (shareLog) {
             client.setLogger(simulation.getLog());
         }
-    }
-
-    public RsRunnable getClient() {
-        return client;
-    }
-
-    public ClientSession getSession() {
-        return session;
     }
 
     /**

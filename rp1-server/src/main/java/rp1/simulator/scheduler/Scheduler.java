@@ -29,8 +29,8 @@ import java.util.function.Consumer;
  *
  * <p><b>Threads.</b> One thread at a time holds the right to run tasks and cross boundaries: the
  * dispatch loop ({@link #runLoop()}), or any thread that calls {@link #pump(long)} and finds the right
- * free (a client's reader that has just released the interlock runs the next task itself, saving a
- * thread hand-off per exchange), or a test calling {@link #runNext()}. Handing the right over goes
+ * free (a transport thread that has just released the interlock or handed over inputs runs what is
+ * then due itself, saving a thread hand-off per exchange), or a test calling {@link #runNext()}. Handing the right over goes
  * through this scheduler's lock, so each holder sees everything the previous one did. Queuing, the
  * clock's stop and resume, and {@link #now()} may be called from any thread.
  */
@@ -86,15 +86,6 @@ public final class Scheduler {
         this.failureHandler = handler;
     }
 
-    public boolean isLockstep() {
-        return clock.isLockstep();
-    }
-
-    /** Simulated seconds per wall second (infinite in lockstep). */
-    public double getSpeed() {
-        return clock.getSpeed();
-    }
-
     // ---------------------------------------------------------------------------------------------
     // Queuing.
 
@@ -126,7 +117,7 @@ public final class Scheduler {
     private TaskHandle enqueue(boolean isImmediate, double time, int priority, boolean model, Task task) {
         lock.lock();
         try {
-            Entry e = new Entry(isImmediate, time, priority, sequence++, model, task);
+            Entry e = new Entry(time, priority, sequence++, model, task);
             if (isImmediate) {
                 immediate.addLast(e);
             } else {
@@ -295,14 +286,6 @@ public final class Scheduler {
         }
     }
 
-    public boolean isHeld() {
-        lock.lock();
-        try {
-            return clock.isHeld();
-        } finally {
-            lock.unlock();
-        }
-    }
 
     // ---------------------------------------------------------------------------------------------
     // Running.
@@ -356,8 +339,9 @@ public final class Scheduler {
 
     /**
      * Runs what may run now on the calling thread for at most {@code budgetNanos}, if no other thread
-     * is running tasks; then lets go, waking the dispatch loop if work remains. A transport thread calls
-     * this after releasing the interlock or delivering inputs.
+     * is running tasks; then lets go and wakes the dispatch loop, which takes over what remains or
+     * waits anew for the next deadline (it may have been waiting without one while this thread held
+     * the right). A transport thread calls this after releasing the interlock or delivering inputs.
      */
     public void pump(long budgetNanos) {
         if (!tryAcquire()) {
@@ -443,15 +427,6 @@ public final class Scheduler {
         }
     }
 
-    public boolean isShutDown() {
-        lock.lock();
-        try {
-            return shutDown;
-        } finally {
-            lock.unlock();
-        }
-    }
-
     private boolean tryAcquire() {
         lock.lock();
         try {
@@ -514,7 +489,7 @@ public final class Scheduler {
             return Step.BOUNDARY;
         }
         try {
-            e.task.run(e.runTime);
+            e.task.run(e.time);
         } catch (RuntimeException ex) {
             failureHandler.accept(ex);
         }
@@ -539,7 +514,15 @@ public final class Scheduler {
             return true;
         }
         Entry head = peekTimed();
-        return head != null && (head.time <= clock.update(head.time) || (clock.isLockstep() && !clock.isHeld()));
+        return head != null && isDue(head);
+    }
+
+    /**
+     * Whether a timed task may run now: a paced clock has reached its time, or a lockstep clock that
+     * is not held may jump there. Holds the lock.
+     */
+    private boolean isDue(Entry head) {
+        return head.time <= clock.update(head.time) || (clock.isLockstep() && !clock.isHeld());
     }
 
     /**
@@ -558,11 +541,10 @@ public final class Scheduler {
         if (head == null) {
             return null;
         }
-        double now = clock.update(head.time);
-        if (head.time > now) {
-            if (!clock.isLockstep() || clock.isHeld()) {
-                return null;
-            }
+        if (!isDue(head)) {
+            return null;
+        }
+        if (head.time > clock.getSimTime()) {
             clock.setSimTime(head.time);
         }
         timed.poll();
@@ -587,26 +569,25 @@ public final class Scheduler {
         return Math.max(1L, Math.min(IDLE_RECHECK_NANOS, clock.nanosUntil(head.time)));
     }
 
-    /** A queued task and its handle: immediate ones first, then by time, higher priority first, order queued. */
+    /**
+     * A queued task and its handle. Timed ones are ordered by time, higher priority first, then order
+     * queued; immediate ones wait in their own queue, in order, and run at the time they were stamped.
+     */
     private final class Entry implements Comparable<Entry>, TaskHandle {
-        final boolean immediate;
         final double time;
         final int priority;
         final long sequence;
         final boolean model;
         final Task task;
-        double runTime;
         boolean queued = true;
         boolean cancelled;
 
-        Entry(boolean immediate, double time, int priority, long sequence, boolean model, Task task) {
-            this.immediate = immediate;
+        Entry(double time, int priority, long sequence, boolean model, Task task) {
             this.time = time;
             this.priority = priority;
             this.sequence = sequence;
             this.model = model;
             this.task = task;
-            this.runTime = time;
         }
 
         @Override

@@ -1,7 +1,7 @@
 package rp1.simulator.scheduler;
 
 /**
- * The simulation clock (docs/behavior.md section 4.2). Two kinds:
+ * The simulation clock (docs/behavior.md section 4.2). Three kinds:
  * <ul>
  * <li>Paced: simulation time follows absolute deadlines, {@code speed} simulated seconds per wall second
  * since the clock began. A task is never run before its deadline; when the simulation falls behind (a
@@ -67,11 +67,6 @@ public final class SimClock {
 
     public boolean isLockstep() {
         return lockstep;
-    }
-
-    /** Simulated seconds per wall second (infinite in lockstep). */
-    public double getSpeed() {
-        return speed;
     }
 
     /** Whether tasks may run: the clock has begun and the interlock does not hold it. */

@@ -149,18 +149,9 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         return description;
     }
 
-    public RsConnection getConnection() {
-        return connection;
-    }
-
     /** The client's robot, or null before it sent a body. Read it on the thread running tasks. */
     public Robot getRobot() {
         return robot;
-    }
-
-    /** Whether the client has left (applied at a boundary). */
-    public boolean hasDeparted() {
-        return departed;
     }
 
     /**
@@ -303,7 +294,7 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         return robot;
     }
 
-    void body(RsBody body, double now) {
+    void body(RsBody body) {
         Robot previous = robot;
         if (previous != null) {
             log.log(description + " sent a second body; it replaces the first (the robot must be placed again)");

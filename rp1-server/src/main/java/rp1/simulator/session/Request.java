@@ -177,7 +177,7 @@ public sealed interface Request {
     record Body(RsBody body) implements Request {
         @Override
         public void applyTo(ClientSession s, double now) {
-            s.body(body, now);
+            s.body(body);
         }
     }
 
