@@ -70,7 +70,12 @@ public final class Scheduler {
     private boolean shutDown;
     /** The thread that holds the right to run tasks, or null. */
     private Thread executor;
-    private volatile long modelTasksRun;
+    /**
+     * Written and read by the holder of the right to run tasks (handing the right over goes through the
+     * lock, which publishes it); others read it only once the scheduler has stopped. Not volatile: it
+     * changes with every task.
+     */
+    private long modelTasksRun;
 
     public Scheduler(SimClock clock) {
         this.clock = clock;
@@ -302,7 +307,10 @@ public final class Scheduler {
         }
     }
 
-    /** Model tasks run so far (observers not counted): the place in the task sequence. */
+    /**
+     * Model tasks run so far (observers not counted): the place in the task sequence. Call on the thread
+     * running tasks, or after the scheduler has stopped.
+     */
     public long modelTasksRun() {
         return modelTasksRun;
     }
