@@ -48,6 +48,20 @@ final class BodyCodec {
         return decode(WireIn.of(payload));
     }
 
+    /**
+     * The body as the server decodes it from the wire: encoded and decoded again, so it holds exactly
+     * the parts and values the wire carries, every part with the id it has in {@code body}.
+     *
+     * @throws IllegalArgumentException as {@link #encode(RsBody)} does
+     */
+    static RsBody copy(RsBody body) {
+        try {
+            return decode(encode(body));
+        } catch (IOException e) {
+            throw new IllegalStateException("a body this library encoded cannot be decoded", e);
+        }
+    }
+
     /** Writes the payload of a body specification; see {@link #encode(RsBody)}. */
     static void encode(WireOut out, RsBody body) {
         List<RsBodyPart> parts = new ArrayList<>();

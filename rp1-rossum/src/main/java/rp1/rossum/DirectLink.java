@@ -8,38 +8,35 @@ import rp1.rossum.event.RsEvent;
  * A client and the server's end of its session in one process, without streams
  * ({@link RsConnection#connectDirect}). Requests go from the client straight into the connection's
  * dispatch; events go from the connection straight into the client's handlers, on the sending thread.
- * What crosses is what the wire would deliver: the body as a decoded copy, every event as the copy
- * the client would decode ({@link EventCodec#copy}), requests as the objects the server would decode
- * (the client builds them so).
+ * What crosses is what the wire would deliver: the body as a decoded copy ({@link BodyCodec#copy}),
+ * every event as the copy the client would decode ({@link EventCodec#copy}), every request as the
+ * object the server would decode ({@link RequestCodec#copying}). The client builds its requests for the
+ * wire; this link alone pays for making them look decoded.
  */
 final class DirectLink {
     private final RsConnection server;
     private final RsClient client;
     private final Consumer<Throwable> onFailure;
+    private final RequestSink requests;
 
     DirectLink(RsConnection server, RsClient client, Consumer<Throwable> onFailure) {
         this.server = server;
         this.client = client;
         this.onFailure = onFailure;
+        this.requests = RequestCodec.copying(server.dispatcher());
     }
 
-    /** Where the client's requests go. */
+    /** Where the client's requests go: copied as decoding would give them, then the server's dispatch. */
     RequestSink requests() {
-        return server.dispatcher();
+        return requests;
     }
 
     /**
-     * The client's body, as the server would decode it from the wire (decoding sets the process-wide
-     * part counter exactly as it does for a client over pipes).
+     * The client's body, as the server would decode it from the wire: every part keeps the id it has
+     * in the client's body, and the process-wide part counter is not touched (decoding never does).
      */
     void body(RsBody body) {
-        RsBody copy;
-        try {
-            copy = BodyCodec.decode(BodyCodec.encode(body));
-        } catch (java.io.IOException e) {
-            throw new IllegalStateException("a body this library encoded cannot be decoded", e);
-        }
-        server.directBody(copy);
+        server.bodyReceived(BodyCodec.copy(body));
     }
 
     /**
@@ -60,6 +57,16 @@ final class DirectLink {
     /** Ends the session on both sides. */
     void close() {
         server.shutdown();
+        client.shutdown();
+    }
+
+    /** The client's closing action: its session ended, so the server's end closes. */
+    void shutdownServer() {
+        server.shutdown();
+    }
+
+    /** The server's closing action: its end of the session closed, so the client's session ends. */
+    void shutdownClient() {
         client.shutdown();
     }
 }

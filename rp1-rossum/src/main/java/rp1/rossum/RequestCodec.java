@@ -19,7 +19,8 @@ import rp1.rossum.request.RsTargetSelectionRequest;
 /**
  * Encodes and decodes the body of a REQUEST transaction (protocol.md section 6): request code,
  * request index (always written as 0), then the request's payload. Encoders return a complete
- * payload in memory; the decoder hands each request to a {@link RequestSink}.
+ * payload in memory; the decoder hands each request to a {@link RequestSink}, and
+ * {@link #copying(RequestSink)} hands on what the decoder would give without encoding anything.
  */
 final class RequestCodec {
     private RequestCodec() {
@@ -112,8 +113,10 @@ final class RequestCodec {
     }
 
     /**
-     * Encodes a request object (the server-side view of requests; clients use the typed methods).
-     * Position requests have no class and are encoded with {@link #position()}.
+     * Encodes a request object whatever its type, by its request code. The client library does not use
+     * it (it knows each request's type and calls the typed methods); tests use it to compare the
+     * requests a server received by their encodings. Position requests have no class and are encoded
+     * with {@link #position()}.
      */
     static WireOut encode(RsRequest r) {
         switch (r.requestID) {
@@ -150,7 +153,8 @@ final class RequestCodec {
         }
     }
 
-    private static WireOut painterChange(RsPainterChangeRequest p) {
+    /** An erasure, a deactivation or an activation, as the request says (an activation's trailer always as defined). */
+    static WireOut painterChange(RsPainterChangeRequest p) {
         if (p.erasure) {
             return painterErasure(p.painterID);
         }
@@ -158,6 +162,19 @@ final class RequestCodec {
             return painterDeactivation(p.painterID);
         }
         return painterActivation(p.painterID, p.xTrailer, p.yTrailer, p.wTrailer, p.color);
+    }
+
+    /**
+     * A sink that hands each request on to {@code target} as the object {@link #decode} would give for
+     * its encoding, built without encoding it (the requests of a directly connected client, see
+     * {@link DirectLink}): a new object of the decoded class, whatever the caller's object was, so
+     * nothing the caller does with its object later reaches the server. The wire's normalisations are
+     * applied: a placement name "" becomes null, a null target name or actuator parameter name "",
+     * an empty colour list null, colours lose their alpha, and an activated painter's trailer counts
+     * as defined. The caller's arrays are copied.
+     */
+    static RequestSink copying(RequestSink target) {
+        return new Copying(target);
     }
 
     /** Reads everything after the header of a REQUEST transaction and hands it to {@code sink}. */
@@ -256,5 +273,117 @@ final class RequestCodec {
             ids[i] = in.i32("encoder id " + i);
         }
         return new RsEncoderStatusRequest(index, ids, in.bool("encoder clear on report"));
+    }
+
+    /** See {@link #copying(RequestSink)}; each method mirrors the encoder and decoder of its request. */
+    private static final class Copying implements RequestSink {
+        private final RequestSink target;
+
+        Copying(RequestSink target) {
+            this.target = target;
+        }
+
+        @Override
+        public void timeout(double duration, int timeoutIndex) {
+            target.timeout(duration, timeoutIndex);
+        }
+
+        @Override
+        public void subscription(RsSubscriptionRequest r) {
+            target.subscription(new RsSubscriptionRequest(r.eventCode, r.eventIndex, r.eventEnable));
+        }
+
+        @Override
+        public void sensorStatus(RsSensorRequest r) {
+            target.sensorStatus(new RsSensorRequest(r.sensorID));
+        }
+
+        @Override
+        public void motion(RsMotionRequest r) {
+            target.motion(new RsMotionRequest(r.linearVelocity, r.rotationalVelocity, r.duration));
+        }
+
+        @Override
+        public void halt(RsHaltRequest r) {
+            target.halt(new RsHaltRequest());
+        }
+
+        @Override
+        public void position() {
+            target.position();
+        }
+
+        @Override
+        public void setPosition() {
+            target.setPosition();
+        }
+
+        @Override
+        public void placement(RsPlacementRequest r) {
+            target.placement(new RsPlacementRequest(r.name == null || r.name.isEmpty() ? null : r.name));
+        }
+
+        @Override
+        public void targetSelection(RsTargetSelectionRequest r) {
+            target.targetSelection(new RsTargetSelectionRequest(r.random, text(r.name), r.status, r.exclusive));
+        }
+
+        @Override
+        public void plan(RsPlanRequest r) {
+            target.plan(new RsPlanRequest());
+        }
+
+        @Override
+        public void heartbeat(RsHeartbeatRequest r) {
+            target.heartbeat(new RsHeartbeatRequest(r.interval));
+        }
+
+        @Override
+        public void painterChange(RsPainterChangeRequest r) {
+            RsPainterChangeRequest copy;
+            if (r.erasure) {
+                copy = new RsPainterChangeRequest(r.painterID, true, false, false, 0.0, 0.0, 0.0, null);
+            } else if (!r.activation) {
+                copy = new RsPainterChangeRequest(r.painterID, false, false, false, 0.0, 0.0, 0.0, null);
+            } else {
+                copy = new RsPainterChangeRequest(r.painterID, false, true, true, r.xTrailer, r.yTrailer, r.wTrailer,
+                        colors(r.color));
+            }
+            target.painterChange(copy);
+        }
+
+        @Override
+        public void actuatorControl(RsActuatorControlRequest r) {
+            RsActuatorControlRequest copy = new RsActuatorControlRequest(r.actuatorID, r.commandID);
+            String[] names = r.getParameterNames();
+            double[] values = r.getParameterValues();
+            for (int i = 0; i < names.length; i++) {
+                copy.addParameter(text(names[i]), values[i]);
+            }
+            target.actuatorControl(copy);
+        }
+
+        @Override
+        public void encoderStatus(RsEncoderStatusRequest r) {
+            target.encoderStatus(new RsEncoderStatusRequest(r.requestIndex, r.encoderID.clone(), r.clearOnReport));
+        }
+
+        /** A STR: null goes as "". */
+        private static String text(String s) {
+            return s == null ? "" : s;
+        }
+
+        /** A COLOR_ARRAY: null or empty arrives as null, each colour as its red, green and blue. */
+        private static Color[] colors(Color[] colors) {
+            if (colors == null || colors.length == 0) {
+                return null;
+            }
+            Color[] copy = new Color[colors.length];
+            for (int i = 0; i < colors.length; i++) {
+                Color c = colors[i];
+                copy[i] = c == null ? null : new Color(c.getRed(), c.getGreen(), c.getBlue());
+            }
+            return copy;
+        }
     }
 }

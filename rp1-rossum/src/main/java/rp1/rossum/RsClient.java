@@ -1,6 +1,5 @@
 package rp1.rossum;
 
-import java.awt.Color;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -60,10 +59,13 @@ import rp1.rossum.request.RsTargetSelectionRequest;
  * register event handlers, send requests, and call {@link #run()} to enter the event loop, which
  * returns when the session ends.
  *
- * <p>Handlers run on the thread executing {@code run()}, in registration order per event, until one
- * calls {@code event.consume()}. When the server runs with the interlock enabled, the
- * acknowledgement of an event is sent after its last handler has returned, so the simulation clock
- * stands still while the handlers work. The {@code send...} methods may be called from any thread.
+ * <p>Handlers run in registration order per event, until one calls {@code event.consume()}. Over a
+ * connection they run on the thread executing {@code run()}; when the server runs with the
+ * interlock enabled, the acknowledgement of an event is sent after its last handler has returned,
+ * so the simulation clock stands still while the handlers work. A client connected directly to a
+ * server in the same process ({@link RsConnection#connectDirect}) has no event loop: its handlers run
+ * on the server's thread that sends each event, which waits for them. The {@code send...} methods
+ * may be called from any thread.
  */
 public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /** The configuration {@link #initialize()} uses; created there if still null. */
@@ -83,8 +85,9 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /**
      * Prepares the session: loads properties if none were given (the library defaults, then
      * {@code rossum.ini} from the working directory or else from next to this object's class), creates
-     * a logger unless one was set, and connects to the server unless streams were supplied
-     * (in-process clients get theirs from the server).
+     * a logger unless one was set, and connects to the server unless streams were supplied or the
+     * client is connected directly (in-process clients get their streams, or their direct link, from
+     * the server).
      *
      * @throws IOException if the server cannot be reached or the handshake fails
      */
@@ -280,11 +283,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removeTimeoutEventHandler() {
-        registry.removeAll(RsEvent.EVT_TIMEOUT, 0);
+        removeLocal(RsEvent.EVT_TIMEOUT, null);
     }
 
     public synchronized void removeTimeoutEventHandler(RsTimeoutEventHandler h) {
-        registry.remove(RsEvent.EVT_TIMEOUT, 0, h);
+        removeLocal(RsEvent.EVT_TIMEOUT, h);
     }
 
     public synchronized void addPositionEventHandler(RsPositionEventHandler h) {
@@ -292,11 +295,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removePositionEventHandler() {
-        registry.removeAll(RsEvent.EVT_POSITION, 0);
+        removeLocal(RsEvent.EVT_POSITION, null);
     }
 
     public synchronized void removePositionEventHandler(RsPositionEventHandler h) {
-        registry.remove(RsEvent.EVT_POSITION, 0, h);
+        removeLocal(RsEvent.EVT_POSITION, h);
     }
 
     public synchronized void addPlacementEventHandler(RsPlacementEventHandler h) {
@@ -304,11 +307,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removePlacementEventHandler() {
-        registry.removeAll(RsEvent.EVT_PLACEMENT, 0);
+        removeLocal(RsEvent.EVT_PLACEMENT, null);
     }
 
     public synchronized void removePlacementEventHandler(RsPlacementEventHandler h) {
-        registry.remove(RsEvent.EVT_PLACEMENT, 0, h);
+        removeLocal(RsEvent.EVT_PLACEMENT, h);
     }
 
     public synchronized void addTargetSelectionEventHandler(RsTargetSelectionEventHandler h) {
@@ -316,11 +319,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removeTargetSelectionEventHandler() {
-        registry.removeAll(RsEvent.EVT_TARGET_SELECTION, 0);
+        removeLocal(RsEvent.EVT_TARGET_SELECTION, null);
     }
 
     public synchronized void removeTargetSelectionEventHandler(RsTargetSelectionEventHandler h) {
-        registry.remove(RsEvent.EVT_TARGET_SELECTION, 0, h);
+        removeLocal(RsEvent.EVT_TARGET_SELECTION, h);
     }
 
     public synchronized void addPlanEventHandler(RsPlanEventHandler h) {
@@ -328,11 +331,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removePlanEventHandler() {
-        registry.removeAll(RsEvent.EVT_PLAN, 0);
+        removeLocal(RsEvent.EVT_PLAN, null);
     }
 
     public synchronized void removePlanEventHandler(RsPlanEventHandler h) {
-        registry.remove(RsEvent.EVT_PLAN, 0, h);
+        removeLocal(RsEvent.EVT_PLAN, h);
     }
 
     public synchronized void addHeartbeatEventHandler(RsHeartbeatEventHandler h) {
@@ -340,11 +343,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removeHeartbeatEventHandler() {
-        registry.removeAll(RsEvent.EVT_HEARTBEAT, 0);
+        removeLocal(RsEvent.EVT_HEARTBEAT, null);
     }
 
     public synchronized void removeHeartbeatEventHandler(RsHeartbeatEventHandler h) {
-        registry.remove(RsEvent.EVT_HEARTBEAT, 0, h);
+        removeLocal(RsEvent.EVT_HEARTBEAT, h);
     }
 
     public synchronized void addEncoderStatusEventHandler(RsEncoderStatusEventHandler h) {
@@ -352,11 +355,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     public synchronized void removeEncoderStatusEventHandler() {
-        registry.removeAll(RsEvent.EVT_ENCODER_STATUS, 0);
+        removeLocal(RsEvent.EVT_ENCODER_STATUS, null);
     }
 
     public synchronized void removeEncoderStatusEventHandler(RsEncoderStatusEventHandler h) {
-        registry.remove(RsEvent.EVT_ENCODER_STATUS, 0, h);
+        removeLocal(RsEvent.EVT_ENCODER_STATUS, h);
     }
 
     private static int sensorId(RsBodySensor sensor) {
@@ -369,9 +372,15 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         }
     }
 
+    /** Events that need no subscription (answers to requests, always delivered): only the handler is stored. */
     private void addLocal(int code, RsEventHandler h) {
         requireHandler(h);
         registry.add(code, 0, h);
+    }
+
+    /** Removes {@code h}, or with {@code h == null} (the no-argument forms) every handler, of a local event. */
+    private void removeLocal(int code, RsEventHandler h) {
+        unregister(code, 0, h);
     }
 
     /**
@@ -393,6 +402,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      */
     private void removeSubscribed(int code, int index, RsEventHandler h) {
         sendSubscription(code, index, false);
+        unregister(code, index, h);
+    }
+
+    /** Removes {@code h}, or with {@code h == null} every handler, of the key. */
+    private void unregister(int code, int index, RsEventHandler h) {
         if (h == null) {
             registry.removeAll(code, index);
         } else {
@@ -438,7 +452,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      * "$random" for a random free pose.
      */
     public synchronized void sendPlacementRequest(String name) {
-        requests().placement(new RsPlacementRequest(name == null || name.isEmpty() ? null : name));
+        requests().placement(new RsPlacementRequest(name));
     }
 
     public synchronized void sendHaltRequest() {
@@ -490,9 +504,8 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
             return;
         }
         painter.setPainterActivationStatus(true);
-        Color[] colors = painter.getPaintColors();
         requests().painterChange(new RsPainterChangeRequest(painter.getID(), false, true, true, painter.getTrailerX(),
-                painter.getTrailerY(), painter.getTrailerWidth(), colors.length == 0 ? null : colors.clone()));
+                painter.getTrailerY(), painter.getTrailerWidth(), painter.getPaintColors()));
     }
 
     public synchronized void sendPainterDeactivationRequest(RsBodyPainter painter) {
@@ -514,7 +527,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     public synchronized void sendActuatorControlRequest(RsActuatorControlRequest r) {
         Objects.requireNonNull(r, "actuator control request");
         if (r.getParameterNames().length > 0) {
-            requests().actuatorControl(copyOf(r));
+            requests().actuatorControl(r);
         } else if (r.commandID == RsActuatorControlRequest.HALT) {
             requests().halt(new RsHaltRequest());
         } else {
@@ -555,10 +568,9 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     public synchronized void sendBodySpecification(RsBody body) {
         Objects.requireNonNull(body, "body");
         DirectLink l = link;
-        if (l != null) {
-            if (!isClosed()) {
-                l.body(body);
-            }
+        // After the session has ended, the wire path drops the body with a log line, as it drops requests.
+        if (l != null && !isClosed()) {
+            l.body(body);
             return;
         }
         WireOut payload = new WireOut();
@@ -567,23 +579,14 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     private void sendTargetSelection(boolean random, String name, boolean status, boolean exclusive) {
-        requests().targetSelection(new RsTargetSelectionRequest(random, name == null ? "" : name, status, exclusive));
-    }
-
-    private static RsActuatorControlRequest copyOf(RsActuatorControlRequest r) {
-        RsActuatorControlRequest copy = new RsActuatorControlRequest(r.actuatorID, r.commandID);
-        String[] names = r.getParameterNames();
-        double[] values = r.getParameterValues();
-        for (int i = 0; i < names.length; i++) {
-            copy.addParameter(names[i], values[i]);
-        }
-        return copy;
+        requests().targetSelection(new RsTargetSelectionRequest(random, name, status, exclusive));
     }
 
     /**
      * Where requests go: encoded onto the connection, or, for a client connected directly to a server
-     * in the same process, straight to the server's dispatch. The request objects are built as the
-     * server would decode them, so both ends see the same thing either way.
+     * in the same process, to the server's dispatch. The request objects are the caller's or built for
+     * the wire (a null name, an empty colour list); the direct link copies them into what the server
+     * would decode, so both ends see the same thing either way.
      */
     private RequestSink requests() {
         DirectLink l = link;
@@ -599,7 +602,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /** A direct link to a server in the same process ({@link RsConnection#connectDirect}). */
     void attach(DirectLink l) {
         link = l;
-        setClosingAction(l::close);
+        setClosingAction(l::shutdownServer);
     }
 
     /** An event from a direct link: dispatched on the calling thread, as {@link #run()} would dispatch it. */
@@ -612,7 +615,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         sendMessage(REQUEST, payload);
     }
 
-    /** Requests encoded onto the connection's stream. */
+    /** Requests encoded onto the connection's stream, each by its own encoder. */
     private final class WireRequests implements RequestSink {
         @Override
         public void timeout(double duration, int timeoutIndex) {
@@ -621,22 +624,22 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
 
         @Override
         public void subscription(RsSubscriptionRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.subscription(r.eventCode, r.eventIndex, r.eventEnable));
         }
 
         @Override
         public void sensorStatus(RsSensorRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.sensorStatus(r.sensorID));
         }
 
         @Override
         public void motion(RsMotionRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.motion(r));
         }
 
         @Override
         public void halt(RsHaltRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.halt());
         }
 
         @Override
@@ -651,37 +654,37 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
 
         @Override
         public void placement(RsPlacementRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.placement(r.name));
         }
 
         @Override
         public void targetSelection(RsTargetSelectionRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.targetSelection(r.random, r.name, r.status, r.exclusive));
         }
 
         @Override
         public void plan(RsPlanRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.plan());
         }
 
         @Override
         public void heartbeat(RsHeartbeatRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.heartbeat(r.interval));
         }
 
         @Override
         public void painterChange(RsPainterChangeRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.painterChange(r));
         }
 
         @Override
         public void actuatorControl(RsActuatorControlRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.actuatorControl(r));
         }
 
         @Override
         public void encoderStatus(RsEncoderStatusRequest r) {
-            sendRequest(RequestCodec.encode(r));
+            sendRequest(RequestCodec.encoderStatus(r.requestIndex, r.encoderID, r.clearOnReport));
         }
     }
 
@@ -709,7 +712,9 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
 
     /**
      * The event loop: reads events and calls their handlers until the server goes away or breaks the
-     * protocol, then shuts the session down (calling the shutdown handler) and returns.
+     * protocol, then shuts the session down (calling the shutdown handler) and returns. A client
+     * connected directly ({@link RsConnection#connectDirect}) has no events to read, its handlers
+     * running on the server's sending thread: for it this only waits until the session has ended.
      */
     @Override
     public void run() {

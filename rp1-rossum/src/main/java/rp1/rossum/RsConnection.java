@@ -5,6 +5,7 @@ import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.util.HashSet;
+import java.util.Objects;
 import java.util.Set;
 import java.util.function.Consumer;
 
@@ -49,15 +50,25 @@ import rp1.rossum.request.RsTargetSelectionRequestHandler;
 import rp1.rossum.request.RsTimeoutRequestHandler;
 
 /**
- * The server's end of one client session. Its {@link #run()} loop reads the client's body
- * specification, requests and interlock acknowledgements and hands them to the handlers the
- * simulator registered; the {@code send...Event} methods write events to the client.
+ * The server's end of one client session. The client's body specification, requests and interlock
+ * acknowledgements are handed to the handlers the simulator registered; the {@code send...Event}
+ * methods send events to the client. A session runs in one of three modes:
+ * <ul>
+ * <li>reading a stream: {@link #run()} reads messages until the client leaves, handlers running on
+ * that thread (RP1 0.60's only mode);
+ * <li>feed mode, beyond RP1 0.60: a non-blocking reader hands over bytes with {@link #receive} and
+ * reports their end with {@link #endOfInput()}, handlers running on the thread that hands them over;
+ * <li>direct mode, beyond RP1 0.60 ({@link #connectDirect}): a client in the same process without
+ * streams, its requests handled on the thread that sends them and events handed to its handlers on
+ * the thread that sends them.
+ * </ul>
  *
  * <p>It also keeps the client's subscription table: which simulation-generated events (mouse clicks,
  * motion started/halted, per-sensor state changes) the client wants. The {@code send...Event} methods
  * do not consult it; the simulator does, before sending.
  */
 public class RsConnection extends RsProtocol implements Runnable {
+    private static final byte[] NO_BYTES = new byte[0];
     /**
      * Subscriptions as (event code, index) keys. RP1 0.60 kept a fixed table of indices 0..1000, so
      * sensors whose part id exceeded 1000 could never subscribe; part ids come from one process-wide
@@ -69,6 +80,8 @@ public class RsConnection extends RsProtocol implements Runnable {
     private final RequestSink dispatcher = new Dispatcher();
     /** Bytes handed to {@link #receive} that do not yet make a whole message. */
     private final FeedBuffer feed = new FeedBuffer();
+    /** Why the bytes in {@link #feed} are not yet a message (the field they end in); current while any wait. */
+    private String incomplete;
     private volatile boolean introduced;
     private volatile DirectLink direct;
     private RsInterlock interlock;
@@ -131,7 +144,9 @@ public class RsConnection extends RsProtocol implements Runnable {
 
     /**
      * Reads the client's messages until it disconnects or breaks the protocol, then shuts the
-     * session down, which calls the shutdown handler (the simulator removes the robot).
+     * session down, which calls the shutdown handler (the simulator removes the robot). A handler's
+     * RuntimeException is not caught: it propagates out of this method, the message that caused it
+     * having been read whole.
      */
     @Override
     public void run() {
@@ -140,11 +155,19 @@ public class RsConnection extends RsProtocol implements Runnable {
                 readTransaction(wire());
             }
         } catch (EOFException e) {
-            log("RsConnection: client " + clientID + " closed the connection");
+            clientLeft();
         } catch (IOException e) {
-            log("RsConnection terminating due to exception on input: " + e.getMessage());
+            inputFailed(e.getMessage());
         }
-        shutdown();
+    }
+
+    /** The CONNECT message until the handshake is done, then any message a client may send. */
+    private void readMessage(WireIn in) throws IOException {
+        if (introduced) {
+            readTransaction(in);
+        } else {
+            readConnect(in);
+        }
     }
 
     private void readTransaction(WireIn in) throws IOException {
@@ -170,7 +193,8 @@ public class RsConnection extends RsProtocol implements Runnable {
         }
     }
 
-    private void bodyReceived(RsBody body) {
+    /** A body specification for the body handler: decoded here, or a decoded copy from a direct link. */
+    void bodyReceived(RsBody body) {
         verbose("Received body specification with name " + body.getName());
         RsConnectionBodyHandler h = bodyHandler;
         if (h != null) {
@@ -183,64 +207,101 @@ public class RsConnection extends RsProtocol implements Runnable {
      * client. Every complete message among the bytes received so far is decoded and dispatched as
      * {@link #run()} would dispatch it (the CONNECT/ACCEPT handshake first, unless
      * {@link #exchangeIntroductions()} already did it); an incomplete one waits for the next call.
+     * The bytes are parsed where they are; only the start of an incomplete message is kept, so the
+     * caller may reuse its array once this returns.
+     *
+     * <p>A handler's RuntimeException (or Error) is not caught, as in {@code run()}: the message that
+     * caused it counts as consumed, and the messages after it wait for the next call (or for
+     * {@link #endOfInput()}).
      *
      * @throws IOException if the bytes break the protocol (the message names the field), or a message
-     *                     grows beyond any the protocol allows; the session should then be shut down
+     *                     grows beyond any the protocol allows; the session should then be ended with
+     *                     {@link #inputFailed}
      */
     public void receive(byte[] bytes, int offset, int length) throws IOException {
-        feed.append(bytes, offset, length);
-        int start = 0;
+        Objects.checkFromIndexSize(offset, length, bytes.length);
+        boolean inPlace = feed.length == 0;
+        byte[] buffer;
+        int at;
+        int end;
+        if (inPlace) {
+            buffer = bytes;
+            at = offset;
+            end = offset + length;
+        } else {
+            feed.append(bytes, offset, length);
+            buffer = feed.bytes;
+            at = 0;
+            end = feed.length;
+        }
+        int start = at;
         try {
-            while (start < feed.length) {
-                ByteArrayInputStream window = new ByteArrayInputStream(feed.bytes, start, feed.length - start);
-                WireIn in = new WireIn(new DataInputStream(window));
+            while (at < end) {
+                ByteArrayInputStream window = new ByteArrayInputStream(buffer, at, end - at);
                 try {
-                    if (introduced) {
-                        readTransaction(in);
-                    } else {
-                        readConnect(in);
-                    }
+                    readMessage(new WireIn(new DataInputStream(window)));
                 } catch (TruncatedMessageException e) {
-                    if (feed.length - start > WireLimits.MAX_MESSAGE_BYTES) {
+                    if (end - at > WireLimits.MAX_MESSAGE_BYTES) {
                         throw new RsProtocolException(e.getField(), "message longer than "
                                 + WireLimits.MAX_MESSAGE_BYTES + " bytes");
                     }
+                    incomplete = e.getMessage();
                     break;
+                } catch (RuntimeException | Error e) {
+                    // A handler failed: the message was read whole before it was dispatched.
+                    at = end - window.available();
+                    throw e;
                 }
-                start = feed.length - window.available();
+                at = end - window.available();
             }
         } finally {
-            feed.consume(start);
+            if (inPlace) {
+                feed.append(buffer, at, end - at);
+            } else {
+                feed.consume(at - start);
+            }
         }
     }
 
     /**
      * Beyond RP1 0.60: the non-blocking transport found the end of the client's input. Ends the
      * session (calling the shutdown handler), logging whether the client left between messages or in
-     * the middle of one.
+     * the middle of one. Complete messages still waiting (a handler threw before they were reached)
+     * are dispatched first, as a reader of a stream reads them before the end.
      */
     public void endOfInput() {
-        if (feed.length > 0) {
-            log("RsConnection terminating due to exception on input: " + truncation());
-        } else {
-            log("RsConnection: client " + clientID + " closed the connection");
+        String problem;
+        try {
+            receive(NO_BYTES, 0, 0);
+            problem = feed.length > 0 ? incomplete : null;
+        } catch (IOException e) {
+            problem = e.getMessage();
+        } catch (RuntimeException | Error e) {
+            shutdown();
+            throw e;
         }
+        if (problem == null) {
+            clientLeft();
+        } else {
+            inputFailed(problem);
+        }
+    }
+
+    private void clientLeft() {
+        log("RsConnection: client " + clientID + " closed the connection");
         shutdown();
     }
 
-    /** What is wrong with the incomplete message left in the feed, naming the field it ended in. */
-    private String truncation() {
-        WireIn in = new WireIn(new DataInputStream(new ByteArrayInputStream(feed.bytes, 0, feed.length)));
-        try {
-            if (introduced) {
-                readTransaction(in);
-            } else {
-                readConnect(in);
-            }
-            return "the connection ended after an incomplete message";
-        } catch (IOException e) {
-            return e.getMessage();
-        }
+    /**
+     * Beyond RP1 0.60: the client's input broke the protocol or could not be read. Logs
+     * "RsConnection terminating due to exception on input: " and {@code reason} (the field at fault
+     * and what was wrong with it), then ends the session, calling the shutdown handler. {@link #run()}
+     * and {@link #endOfInput()} end this way; a non-blocking reader calls it when {@link #receive}
+     * throws.
+     */
+    public void inputFailed(String reason) {
+        log("RsConnection terminating due to exception on input: " + reason);
+        shutdown();
     }
 
     /** Whether the CONNECT/ACCEPT handshake has been done. */
@@ -261,17 +322,12 @@ public class RsConnection extends RsProtocol implements Runnable {
         DirectLink link = new DirectLink(this, client, onFailure);
         direct = link;
         client.attach(link);
-        setClosingAction(link::close);
+        setClosingAction(link::shutdownClient);
     }
 
     /** What the client's requests are handed to: the same dispatch as for decoded requests. */
     RequestSink dispatcher() {
         return dispatcher;
-    }
-
-    /** A body from a directly connected client (already a decoded copy). */
-    void directBody(RsBody body) {
-        bodyReceived(body);
     }
 
     /**
@@ -327,7 +383,8 @@ public class RsConnection extends RsProtocol implements Runnable {
 
     /**
      * Sends any event. A write failure is logged and ends the session (the reader then stops too);
-     * after that, sends do nothing.
+     * after that, sends do nothing. To a directly connected client ({@link #connectDirect}) nothing is
+     * written: a copy of the event goes to the client's handlers, which have run when this returns.
      */
     public void sendEvent(RsEvent event) {
         DirectLink link = direct;

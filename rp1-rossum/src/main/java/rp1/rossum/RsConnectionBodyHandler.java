@@ -8,6 +8,10 @@ public abstract class RsConnectionBodyHandler {
     public RsConnectionBodyHandler() {
     }
 
-    /** Called, on the thread that reads the connection (or feeds it bytes), when a body specification arrives. */
+    /**
+     * Called when a body specification arrives: on the thread that reads the connection (or feeds it
+     * bytes), or, for a client connected directly, on the client's thread calling
+     * {@code sendBodySpecification} (with a decoded copy of its body).
+     */
     public abstract void process(RsBody body);
 }

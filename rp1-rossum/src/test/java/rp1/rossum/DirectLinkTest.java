@@ -2,12 +2,18 @@ package rp1.rossum;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Color;
+import java.lang.reflect.Field;
+import java.lang.reflect.Modifier;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 
@@ -30,8 +36,17 @@ import rp1.rossum.event.RsTargetSelectionEvent;
 import rp1.rossum.event.RsTargetSensorEvent;
 import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.request.RsActuatorControlRequest;
+import rp1.rossum.request.RsEncoderStatusRequest;
+import rp1.rossum.request.RsHaltRequest;
+import rp1.rossum.request.RsHeartbeatRequest;
 import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.request.RsPainterChangeRequest;
+import rp1.rossum.request.RsPlacementRequest;
+import rp1.rossum.request.RsPlanRequest;
 import rp1.rossum.request.RsRequest;
+import rp1.rossum.request.RsSensorRequest;
+import rp1.rossum.request.RsSubscriptionRequest;
+import rp1.rossum.request.RsTargetSelectionRequest;
 import rp1.rossum.request.RsTimeoutRequest;
 
 /**
@@ -184,5 +199,190 @@ class DirectLinkTest {
             return o.getClass().getSimpleName() + " " + Arrays.toString(RequestCodec.encode((RsRequest) o).toByteArray());
         }
         return String.valueOf(o);
+    }
+
+    /** Request objects as callers build them, including what the wire normalises or cannot carry. */
+    private static List<RsRequest> requestsAsCallersBuildThem() {
+        RsActuatorControlRequest control = new RsActuatorControlRequest(42, RsActuatorControlRequest.ACTIVATE);
+        control.addParameter("left", 1.5);
+        control.addParameter(null, -2.0);
+        return Arrays.asList(
+                new RsSubscriptionRequest(3, 17, true),
+                new RsSensorRequest(9),
+                new RsMotionRequest(0.3, -0.2, 4.0) {
+                    private static final long serialVersionUID = 1L;
+                },
+                new RsHaltRequest(),
+                new RsPlacementRequest(""),
+                new RsPlacementRequest(null),
+                new RsPlacementRequest("home"),
+                new RsTargetSelectionRequest(false, null, true, false),
+                new RsTargetSelectionRequest(true, "F3", false, true),
+                new RsPlanRequest(),
+                new RsHeartbeatRequest(0.25),
+                new RsPainterChangeRequest(5, true, false, false, 0.0, 0.0, 0.0, null),
+                new RsPainterChangeRequest(5, false, false, false, 0.0, 0.0, 0.0, null),
+                new RsPainterChangeRequest(5, false, true, false, -0.1, 0.2, 0.02,
+                        new Color[] {new Color(10, 20, 30, 100), null, Color.blue}),
+                new RsPainterChangeRequest(5, false, true, true, -0.1, 0.2, 0.02, new Color[0]),
+                new RsPainterChangeRequest(5, false, true, true, -0.1, 0.2, 0.02, null),
+                control,
+                new RsActuatorControlRequest(7, RsActuatorControlRequest.RESET),
+                new RsEncoderStatusRequest(3, new int[] {4, 8}, true));
+    }
+
+    /** Hands {@code r} to the sink method for its type, as RsClient does. */
+    private static void hand(RequestSink sink, RsRequest r) {
+        switch (r.requestID) {
+            case RsRequest.REQ_SUBSCRIPTION:
+                sink.subscription((RsSubscriptionRequest) r);
+                break;
+            case RsRequest.REQ_SENSOR_STATUS:
+                sink.sensorStatus((RsSensorRequest) r);
+                break;
+            case RsRequest.REQ_MOTION:
+                sink.motion((RsMotionRequest) r);
+                break;
+            case RsRequest.REQ_HALT:
+                sink.halt((RsHaltRequest) r);
+                break;
+            case RsRequest.REQ_PLACEMENT:
+                sink.placement((RsPlacementRequest) r);
+                break;
+            case RsRequest.REQ_TARGET_SELECTION:
+                sink.targetSelection((RsTargetSelectionRequest) r);
+                break;
+            case RsRequest.REQ_PLAN:
+                sink.plan((RsPlanRequest) r);
+                break;
+            case RsRequest.REQ_HEARTBEAT:
+                sink.heartbeat((RsHeartbeatRequest) r);
+                break;
+            case RsRequest.REQ_PAINTER_CHANGE:
+                sink.painterChange((RsPainterChangeRequest) r);
+                break;
+            case RsRequest.REQ_ACTUATOR_CONTROL:
+                sink.actuatorControl((RsActuatorControlRequest) r);
+                break;
+            default:
+                sink.encoderStatus((RsEncoderStatusRequest) r);
+                break;
+        }
+    }
+
+    /** Every instance field a handler can see, colours with their alpha; the class exactly. */
+    private static String fields(RsRequest r) throws Exception {
+        StringBuilder b = new StringBuilder(r.getClass().getName());
+        Field[] fields = r.getClass().getFields();
+        Arrays.sort(fields, Comparator.comparing(Field::getName));
+        for (Field f : fields) {
+            if (Modifier.isStatic(f.getModifiers())) {
+                continue;
+            }
+            Object v = f.get(r);
+            b.append(' ').append(f.getName()).append('=');
+            if (v instanceof Color[]) {
+                List<String> colors = new ArrayList<>();
+                for (Color c : (Color[]) v) {
+                    colors.add(c == null ? "null" : c.getClass().getName() + Integer.toHexString(c.getRGB()));
+                }
+                b.append(colors);
+            } else if (v instanceof int[]) {
+                b.append(Arrays.toString((int[]) v));
+            } else {
+                b.append(v == null ? "null" : "\"" + v + "\"");
+            }
+        }
+        if (r instanceof RsActuatorControlRequest) {
+            RsActuatorControlRequest a = (RsActuatorControlRequest) r;
+            b.append(' ').append(Arrays.toString(a.getParameterNames())).append(Arrays.toString(a.getParameterValues()));
+        }
+        return b.toString();
+    }
+
+    /** The direct link's copies are what decoding gives, field by field, not just byte for byte. */
+    @Test
+    void theDirectLinksRequestCopiesAreWhatDecodingGives() throws Exception {
+        for (RsRequest r : requestsAsCallersBuildThem()) {
+            RecordingSink decoded = new RecordingSink();
+            RequestCodec.decode(WireIn.of(RequestCodec.encode(r).toByteArray()), decoded);
+            RecordingSink copied = new RecordingSink();
+            hand(RequestCodec.copying(copied), r);
+            assertEquals(decoded.calls, copied.calls, r.toString());
+            assertEquals(fields(decoded.last), fields(copied.last), r.toString());
+            assertNotSame(r, copied.last, "the caller's object does not reach the server");
+        }
+        RecordingSink copied = new RecordingSink();
+        RequestSink copying = RequestCodec.copying(copied);
+        copying.timeout(-1.5, 4);
+        copying.position();
+        copying.setPosition();
+        assertEquals(Arrays.asList("timeout", "position", "setPosition"), copied.calls);
+        assertEquals(-1.5, copied.timeoutDuration);
+        assertEquals(4, copied.timeoutIndex);
+    }
+
+    @Test
+    void theDirectLinkCopiesArraysTheCallerMayChangeLater() throws Exception {
+        RecordingSink copied = new RecordingSink();
+        int[] ids = {4, 8};
+        RequestCodec.copying(copied).encoderStatus(new RsEncoderStatusRequest(1, ids, false));
+        ids[0] = 99;
+        assertArrayEquals(new int[] {4, 8}, ((RsEncoderStatusRequest) copied.last).encoderID);
+        Color[] colors = {Color.red};
+        RequestCodec.copying(copied).painterChange(
+                new RsPainterChangeRequest(5, false, true, true, 0.0, 0.0, 0.02, colors));
+        colors[0] = Color.green;
+        assertEquals(Color.red, ((RsPainterChangeRequest) copied.last).color[0]);
+    }
+
+    @Test
+    void aBodySentAfterADirectSessionEndedIsDroppedWithTheWirePathsLogLine() throws Exception {
+        List<String> log = new ArrayList<>();
+        RsClient client = new RsClient();
+        client.setLogger(new RsLogAdapter() {
+            @Override
+            public void logIt(String level, String message) {
+                log.add(message);
+            }
+        });
+        client.setVerbosity(true);
+        RsConnection server = new RsConnection();
+        ServerRecorder recorder = new ServerRecorder(server);
+        server.connectDirect(client, t -> {
+            throw new AssertionError(t);
+        });
+        server.shutdown();
+        RsBody body = new RsBody("late");
+        body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
+        client.sendBodySpecification(body);
+        assertNull(recorder.received.poll(0), "nothing reaches the closed server");
+        assertTrue(log.contains("RsClient: session closed, BODY_SPECIFICATION not sent"), log.toString());
+    }
+
+    @Test
+    void closingEitherSideOfADirectLinkClosesBothOnce() throws Exception {
+        for (boolean clientFirst : new boolean[] {true, false}) {
+            RsClient client = ClientEventLoopTest.quietClient();
+            RsConnection server = new RsConnection();
+            server.setLogger(null);
+            int[] calls = new int[2];
+            client.setProtocolShutdownHandler(() -> calls[0]++);
+            server.setProtocolShutdownHandler(() -> calls[1]++);
+            server.connectDirect(client, t -> {
+                throw new AssertionError(t);
+            });
+            assertFalse(client.isClosed());
+            if (clientFirst) {
+                client.shutdown();
+            } else {
+                server.shutdown();
+            }
+            assertTrue(client.isClosed(), "client first: " + clientFirst);
+            assertTrue(server.isClosed(), "client first: " + clientFirst);
+            client.shutdown();
+            server.shutdown();
+            assertArrayEquals(new int[] {1, 1}, calls, "client first: " + clientFirst);
+        }
     }
 }

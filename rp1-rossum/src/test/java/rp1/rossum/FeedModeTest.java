@@ -16,6 +16,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.request.RsPlacementRequest;
+import rp1.rossum.request.RsPlacementRequestHandler;
 import rp1.rossum.request.RsRequest;
 import rp1.rossum.request.RsTimeoutRequest;
 
@@ -179,5 +181,163 @@ class FeedModeTest {
         assertTrue(log.get(log.size() - 1).endsWith(
                 "terminating due to exception on input: header client key: stream ended in the middle of a message"),
                 log.toString());
+    }
+
+    /** What the stream reading gives, without the placement (whose handler the tests below replace). */
+    private static List<String> withoutThePlacement(List<String> requests) {
+        List<String> rest = new ArrayList<>(requests);
+        rest.remove(1);
+        return rest;
+    }
+
+    private static Received withAFailingPlacementHandler(int[] calls) {
+        Received r = new Received();
+        r.connection.setPlacementRequestHandler(new RsPlacementRequestHandler() {
+            @Override
+            public void process(RsPlacementRequest request) {
+                calls[0]++;
+                throw new IllegalStateException("placement handler failed");
+            }
+
+            @Override
+            public void processRequest(RsRequest request) {
+                process((RsPlacementRequest) request);
+            }
+        });
+        return r;
+    }
+
+    @Test
+    void aMessageWhoseHandlerThrowsIsConsumedAndTheExceptionPropagates() throws Exception {
+        byte[] bytes = clientSession();
+        int[] placements = {0};
+        Received r = withAFailingPlacementHandler(placements);
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> r.connection.receive(bytes, 0, bytes.length));
+        assertEquals("placement handler failed", e.getMessage());
+        assertEquals(1, placements[0]);
+        assertEquals(1, r.drain().size(), "the body came before the placement; what follows it waits");
+        r.connection.receive(bytes, 0, 0);
+        assertEquals(1, placements[0], "the placement is not handled a second time");
+        assertEquals(withoutThePlacement(readAsStream(bytes).requests), r.drain());
+        assertEquals(List.of(ACK), r.acks);
+    }
+
+    @Test
+    void theEndOfInputAfterAHandlerThrewDispatchesWhatWaitsButNotTheFailedMessageAgain() throws Exception {
+        byte[] bytes = clientSession();
+        int[] placements = {0};
+        Received r = withAFailingPlacementHandler(placements);
+        List<String> log = new ArrayList<>();
+        r.connection.setLogger(new RsLogAdapter() {
+            @Override
+            public void logIt(String level, String message) {
+                log.add(message);
+            }
+        });
+        assertThrows(IllegalStateException.class, () -> r.connection.receive(bytes, 0, bytes.length));
+        r.connection.endOfInput();
+        assertEquals(1, placements[0], "the placement is not handled a second time");
+        assertEquals(withoutThePlacement(readAsStream(bytes).requests), r.drain());
+        assertEquals("RsConnection: client 0 closed the connection", log.get(log.size() - 1), log.toString());
+    }
+
+    @Test
+    void aMessageCutAcrossCallsDoesNotDependOnTheCallersArrayAfterwards() throws Exception {
+        byte[] bytes = clientSession();
+        Received reference = readAsStream(bytes);
+        for (int cut = 1; cut < bytes.length; cut += 7) {
+            Received r = new Received();
+            byte[] first = Arrays.copyOf(bytes, cut);
+            r.connection.receive(first, 0, first.length);
+            Arrays.fill(first, (byte) 0x55);
+            byte[] rest = Arrays.copyOfRange(bytes, cut, bytes.length);
+            r.connection.receive(rest, 0, rest.length);
+            Arrays.fill(rest, (byte) 0x55);
+            assertEquals(reference.requests, r.drain(), "cut at byte " + cut);
+        }
+    }
+
+    @Test
+    void aMessageLargerThanTheBufferArrivesWholeAndTheBufferShrinksAfterwards() throws Exception {
+        ByteArrayOutputStream sent = new ByteArrayOutputStream();
+        RsClient client = ClientEventLoopTest.quietClient();
+        byte[] accept = new WireOut().header(0, 0, 1, RsProtocol.ACCEPT).toByteArray();
+        client.setInputOutputStreams(new ByteArrayInputStream(accept), sent);
+        client.exchangeIntroductions();
+        RsBodyPart.setNextPartSerialNumber(1);
+        RsBody body = new RsBody("big");
+        for (int i = 0; i < 3000; i++) {
+            body.addPart(new RsBodyCircle(i * 0.001, 0.0, 0.1));
+        }
+        client.sendBodySpecification(body);
+        client.sendPositionRequest();
+        byte[] bytes = sent.toByteArray();
+        assertTrue(bytes.length > 3 * 64 * 1024, "bigger than one read: " + bytes.length);
+        List<String> reference = readAsStream(bytes).requests;
+        Received r = new Received();
+        for (int from = 0; from < bytes.length; from += 64 * 1024) {
+            r.connection.receive(bytes, from, Math.min(64 * 1024, bytes.length - from));
+        }
+        assertEquals(reference, r.drain());
+        assertEquals(2, reference.size());
+    }
+
+    @Test
+    void anEmptiedBufferGivesBackALargeArray() {
+        FeedBuffer feed = new FeedBuffer();
+        byte[] big = new byte[1 << 20];
+        feed.append(big, 0, 100);
+        feed.consume(40);
+        assertEquals(60, feed.length);
+        feed.append(big, 0, big.length);
+        assertEquals(60 + big.length, feed.length);
+        feed.consume(feed.length - 10);
+        assertEquals(10, feed.length, "not empty: the array stays");
+        assertTrue(feed.bytes.length > FeedBuffer.RETAINED_CAPACITY);
+        feed.consume(10);
+        assertEquals(0, feed.length);
+        assertEquals(FeedBuffer.INITIAL_CAPACITY, feed.bytes.length, "empty: back to the initial size");
+        feed.append(big, 0, 1000);
+        feed.consume(1000);
+        assertEquals(FeedBuffer.INITIAL_CAPACITY * 2, feed.bytes.length, "a small array is kept for reuse");
+    }
+
+    @Test
+    void aReadingThreadAndAFeedLogTheSameLineForAProtocolError() throws Exception {
+        byte[] connect = Arrays.copyOf(clientSession(), 20);
+        byte[] garbage = new WireOut().header(0, 0, 2, 99).toByteArray();
+        byte[] both = Arrays.copyOf(connect, 40);
+        System.arraycopy(garbage, 0, both, 20, 20);
+
+        List<String> streamLog = new ArrayList<>();
+        Received stream = new Received();
+        stream.connection.setLogger(into(streamLog));
+        stream.connection.setInputOutputStreams(new ByteArrayInputStream(both), stream.answered);
+        stream.connection.exchangeIntroductions();
+        stream.connection.run();
+
+        List<String> feedLog = new ArrayList<>();
+        Received fed = new Received();
+        fed.connection.setLogger(into(feedLog));
+        boolean[] shutDown = {false};
+        fed.connection.setProtocolShutdownHandler(() -> shutDown[0] = true);
+        RsProtocolException e = assertThrows(RsProtocolException.class,
+                () -> fed.connection.receive(both, 0, both.length));
+        assertFalse(shutDown[0], "receive reports; the caller ends the session");
+        fed.connection.inputFailed(e.getMessage());
+        assertTrue(shutDown[0]);
+        assertEquals(streamLog, feedLog);
+        assertTrue(feedLog.get(0).startsWith(
+                "RsConnection terminating due to exception on input: header transaction code: "), feedLog.toString());
+    }
+
+    private static RsLogAdapter into(List<String> log) {
+        return new RsLogAdapter() {
+            @Override
+            public void logIt(String level, String message) {
+                log.add(message);
+            }
+        };
     }
 }

@@ -62,15 +62,6 @@ public final class ClientConnection extends RsConnection {
         shutdown();
     }
 
-    /**
-     * The client broke the protocol: logged as a reader of a stream logs it, and the session ends (the
-     * robot leaves, the interlock it held is released).
-     */
-    public void protocolError(String reason) {
-        log("RsConnection terminating due to exception on input: " + reason);
-        shutdown();
-    }
-
     /** Whether the session has ended. */
     public boolean hasEnded() {
         return ended.get();

@@ -1,6 +1,8 @@
 package rp1.simulator.net;
 
 import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.StandardSocketOptions;
@@ -120,7 +122,8 @@ public final class ClientListener {
         final SocketChannel channel;
         final ClientConnection connection;
         final long deadline;
-        byte[] unread = new byte[0];
+        /** What was read this round, one array per read, in order; the connection joins split messages. */
+        final List<byte[]> unread = new ArrayList<>();
         boolean ended;
 
         Peer(SocketChannel channel, ClientConnection connection, long deadline) {
@@ -244,7 +247,6 @@ public final class ClientListener {
     /** Reads what the client has sent (up to a round's share); notes the end of its input. */
     private void read(Peer p) {
         int total = 0;
-        List<byte[]> chunks = new ArrayList<>();
         try {
             while (total < MAX_BYTES_PER_ROUND) {
                 readBuffer.clear();
@@ -256,7 +258,7 @@ public final class ClientListener {
                 if (n == 0) {
                     break;
                 }
-                chunks.add(Arrays.copyOf(readBuffer.array(), n));
+                p.unread.add(Arrays.copyOf(readBuffer.array(), n));
                 total += n;
             }
         } catch (ClosedChannelException e) {
@@ -267,36 +269,44 @@ public final class ClientListener {
                 log.log(p.connection.getDescription() + ": reading failed: " + e.getMessage());
             }
         }
-        byte[] all = new byte[total];
-        int at = 0;
-        for (byte[] c : chunks) {
-            System.arraycopy(c, 0, all, at, c.length);
-            at += c.length;
-        }
-        p.unread = all;
     }
 
-    /** Hands the bytes read to the client's connection; ends the session on a protocol error or the end of input. */
+    /**
+     * Hands the bytes read to the client's connection, read by read; ends the session on a protocol
+     * error, a failing request handler, or the end of input.
+     */
     private void deliver(Peer p) {
         ClientConnection c = p.connection;
         if (c.hasEnded()) {
+            p.unread.clear();
             closeQuietly(p.channel);
             return;
         }
         boolean wasIntroduced = c.hasIntroduced();
         try {
-            c.receive(p.unread, 0, p.unread.length);
+            for (byte[] chunk : p.unread) {
+                c.receive(chunk, 0, chunk.length);
+            }
         } catch (IOException e) {
             String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
             if (c.hasIntroduced()) {
-                c.protocolError(reason);
+                c.inputFailed(reason);
             } else {
                 handshakeFailed(p, reason);
             }
             closeQuietly(p.channel);
             return;
+        } catch (RuntimeException e) {
+            // One client's message must not stop the network thread, which reads every client.
+            introducing.remove(p);
+            StringWriter trace = new StringWriter();
+            e.printStackTrace(new PrintWriter(trace));
+            c.close("handling its message failed: " + trace);
+            closeQuietly(p.channel);
+            return;
+        } finally {
+            p.unread.clear();
         }
-        p.unread = null;
         if (!wasIntroduced && c.hasIntroduced()) {
             introducing.remove(p);
             log.log(c.getDescription() + " connected (" + c.getIdentity() + ")");
