@@ -29,7 +29,8 @@ public final class SnapshotPublisher implements WorldListener, AutoCloseable {
     private final AtomicReference<WorldSnapshot> latest;
     private final Task capture = this::capture;
     private TaskHandle queued = TaskHandle.NONE;
-    private volatile boolean closed;
+    /** Read and written only under this publisher's lock. */
+    private boolean closed;
 
     /** Starts observing the simulation's world; the first snapshot shows the plan alone. */
     public SnapshotPublisher(Simulation simulation) {

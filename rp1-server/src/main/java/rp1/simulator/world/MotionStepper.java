@@ -103,6 +103,8 @@ final class MotionStepper implements Task {
             r.advance(time);
             if (r.hasPendingRequest()) {
                 r.startPendingMotion(time, world.wallsForMotion(r, r.pendingRequest()));
+                // Filed where the new motion can take it before any contact search looks it up.
+                world.indexRobot(r, time, interval);
             }
         }
         world.searchContacts(active, time, time + interval + RobotContacts.LOOK_AHEAD);
@@ -117,6 +119,9 @@ final class MotionStepper implements Task {
         for (Robot r : group) {
             if (r.isTouched()) {
                 r.pressTouched(time);
+                if (r.isTouched() && !r.isMoving()) {
+                    evaluateBy(r, r.nextTouch());
+                }
             }
         }
         requeue();

@@ -25,7 +25,7 @@ import rp1.rossum.request.RsPainterChangeRequest;
 /**
  * One client's robot in the world: its body, whether it is placed, its motion, the motion request
  * waiting to start, and its paint trails. The motion lifecycle of behavior.md section 5.4 lives here,
- * split into the phases the {@link MotionStepper} runs for all robots at one time.
+ * split into the phases the {@link MotionStepper} runs for the robots due at one time.
  *
  * <p>Everything here runs on the thread running the simulation's tasks (see
  * {@link rp1.simulator.scheduler.Scheduler}); a placement request marks the robot unplaced when it is
@@ -49,10 +49,13 @@ public final class Robot {
     /** The box the {@link RobotIndex} filed the robot under: x0, y0, x1, y1. */
     private final double[] indexBox = new double[4];
     private boolean indexed;
-    /** Contact sensors another robot ran into while this one stood still, pressed at {@link #touchTime}. */
-    private final List<RsBodyContactSensor> touched = new ArrayList<>();
-    private String touchedBy;
-    private double touchTime;
+    /**
+     * Contact sensors other robots ran into while this one stood still, each with the name of the robot
+     * and the time it stops, when the sensor is pressed; in the order the contacts were found.
+     */
+    private final List<Touch> touched = new ArrayList<>();
+    /** Whether this robot has searched for contacts in the evaluation under way ({@link RobotContacts}). */
+    private boolean searched;
 
     Robot(int number, RsBody body, EventSink events) {
         this.number = number;
@@ -81,11 +84,10 @@ public final class Robot {
 
     /**
      * Whether a reading of this robot's range or target sensors, the robot at {@code pose}, could
-     * depend on {@code other} at {@code time} (see it, or be blocked by it).
+     * depend on {@code other} at {@code otherPose} (see it, or be blocked by it).
      */
-    boolean mightSee(RsTransform pose, Robot other, double time) {
-        RsTransform b = other.poseAt(time);
-        return sight.mightSee(pose, b.m13, b.m23, other.shapes.reach() + 1.0e-9);
+    boolean mightSee(RsTransform pose, Robot other, RsTransform otherPose) {
+        return sight.mightSee(pose, otherPose.m13, otherPose.m23, other.shapes.reach() + 1.0e-9);
     }
 
     /** The pose at {@code time} under the current motion (identity before the first placement). */
@@ -275,13 +277,13 @@ public final class Robot {
 
     /**
      * Another robot ran into this one, which stands still: {@code sensors} touch it and go hot with its
-     * name at {@code time}, when the other robot has stopped.
+     * name at {@code time}, when the other robot has stopped. Added to those of any other robot that
+     * ran into this one before they were pressed.
      */
     void touchedAt(double time, List<RsBodyContactSensor> sensors, String name) {
-        touched.clear();
-        touched.addAll(sensors);
-        touchedBy = name;
-        touchTime = time;
+        for (RsBodyContactSensor s : sensors) {
+            touched.add(new Touch(s, name, time));
+        }
     }
 
     /** Whether contact sensors are waiting to be pressed by a robot that ran into this one. */
@@ -289,24 +291,46 @@ public final class Robot {
         return !touched.isEmpty();
     }
 
+    /** The earliest time contact sensors wait to be pressed at (only when {@link #isTouched()}). */
+    double nextTouch() {
+        double first = Double.POSITIVE_INFINITY;
+        for (Touch t : touched) {
+            first = Math.min(first, t.time);
+        }
+        return first;
+    }
+
     /**
-     * Presses the contact sensors another robot ran into, once {@code time} has come: those not hot yet
-     * go hot with its name (one event each, in part order). They are released as any contact sensor,
-     * when this robot next starts a motion.
+     * Presses the contact sensors other robots ran into whose time has come by {@code time}: those not
+     * hot yet go hot with the name of the robot touching them (the earliest, if several; one event
+     * each, in part order). They are released as any contact sensor, when this robot next starts a
+     * motion. Sensors whose robot stops later keep waiting.
      */
     void pressTouched(double time) {
-        if (touched.isEmpty() || time < touchTime) {
-            return;
-        }
         for (RsBodySensor s : body.getBodySensorArray()) {
-            if (touched.contains(s) && !s.getHot()) {
-                RsBodyContactSensor c = (RsBodyContactSensor) s;
-                c.setCollision(true, touchedBy);
+            Touch first = null;
+            for (Touch t : touched) {
+                if (t.sensor == s && t.time <= time && (first == null || t.time < first.time)) {
+                    first = t;
+                }
+            }
+            if (first != null && !s.getHot()) {
+                RsBodyContactSensor c = first.sensor;
+                c.setCollision(true, first.by);
                 c.setHot(true);
                 events.sendIfSubscribed(c.getStateChangeEvent(time));
             }
         }
-        touched.clear();
+        touched.removeIf(t -> t.time <= time);
+    }
+
+    /** Whether this robot has searched for contacts in the evaluation under way. */
+    boolean hasSearched() {
+        return searched;
+    }
+
+    void setSearched(boolean searched) {
+        this.searched = searched;
     }
 
     /** A halt request: any waiting request is dropped and a motion under way stops at {@code time}. */
@@ -384,9 +408,22 @@ public final class Robot {
         }
     }
 
-    /** The robot's shapes at {@code time}, as walls other robots sense and are placed against. */
-    RsWall[] obstaclesAt(double time) {
-        return shapes.asWalls(poseAt(time), label);
+    /** The robot's shapes at {@code pose}, as walls other robots sense and are placed against. */
+    RsWall[] obstaclesAt(RsTransform pose) {
+        return shapes.asWalls(pose, label);
+    }
+
+    /** A contact sensor another robot ran into, pressed with its name at the time it stops. */
+    private static final class Touch {
+        final RsBodyContactSensor sensor;
+        final String by;
+        final double time;
+
+        Touch(RsBodyContactSensor sensor, String by, double time) {
+            this.sensor = sensor;
+            this.by = by;
+            this.time = time;
+        }
     }
 
     @Override

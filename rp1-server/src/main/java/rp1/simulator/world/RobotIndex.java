@@ -6,6 +6,7 @@ import java.util.List;
 
 import rp1.rossum.RsMotion;
 import rp1.rossum.RsRectangle;
+import rp1.rossum.RsTransform;
 
 /**
  * The robots on the floor by place: each robot's box (a square about its position, as wide as its
@@ -46,8 +47,9 @@ final class RobotIndex {
         }
         byNumber[n] = r;
         double[] box = r.indexBox();
-        double x = r.poseAt(time).m13;
-        double y = r.poseAt(time).m23;
+        RsTransform pose = r.poseAt(time);
+        double x = pose.m13;
+        double y = pose.m23;
         double grow = r.shapes().reach() + speedBound(r) * horizon + RobotContacts.SAMPLE_SPACING;
         box[0] = x - grow;
         box[1] = y - grow;

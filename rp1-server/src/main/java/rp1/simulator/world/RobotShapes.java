@@ -16,8 +16,13 @@ import rp1.rossum.RsWall;
 final class RobotShapes {
     private final double[][] outlines;
     private final double reach;
-    /** The last pose {@link #asWalls} was asked for (m11, m12, m13, m21, m22, m23) and its answer. */
-    private final double[] wallsPose = new double[6];
+    /** The last pose {@link #asWalls} was asked for and its answer. */
+    private double w11;
+    private double w12;
+    private double w13;
+    private double w21;
+    private double w22;
+    private double w23;
     private RsWall[] walls;
 
     RobotShapes(RsBody body) {
@@ -48,12 +53,22 @@ final class RobotShapes {
      * the last pose is kept; callers only read it.
      */
     RsWall[] asWalls(RsTransform pose, String name) {
-        double[] p = {pose.m11, pose.m12, pose.m13, pose.m21, pose.m22, pose.m23};
-        if (walls == null || !Arrays.equals(p, wallsPose)) {
+        if (walls == null || !same(pose.m11, w11) || !same(pose.m12, w12) || !same(pose.m13, w13)
+                || !same(pose.m21, w21) || !same(pose.m22, w22) || !same(pose.m23, w23)) {
             walls = wallsAt(pose, name);
-            System.arraycopy(p, 0, wallsPose, 0, p.length);
+            w11 = pose.m11;
+            w12 = pose.m12;
+            w13 = pose.m13;
+            w21 = pose.m21;
+            w22 = pose.m22;
+            w23 = pose.m23;
         }
         return walls;
+    }
+
+    /** Bit for bit the same value (as {@link Arrays#equals(double[], double[])} compares). */
+    private static boolean same(double a, double b) {
+        return Double.doubleToLongBits(a) == Double.doubleToLongBits(b);
     }
 
     private RsWall[] wallsAt(RsTransform pose, String name) {

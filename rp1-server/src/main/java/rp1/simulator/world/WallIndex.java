@@ -38,11 +38,6 @@ final class WallIndex {
         }
     }
 
-    /** Every wall. */
-    RsWall[] all() {
-        return walls;
-    }
-
     /** The walls whose boxes come near the box [x0, x1] x [y0, y1] (every wall of a small plan). */
     RsWall[] near(double x0, double y0, double x1, double y1) {
         if (grid == null) {

@@ -3,7 +3,6 @@ package rp1.simulator.world;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import java.util.Map;
 import java.util.Random;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.IntConsumer;
@@ -23,8 +22,10 @@ import rp1.simulator.scheduler.Scheduler;
 
 /**
  * The simulated world: the floor plan and the robots in it. Robots join when their client sends a
- * body, in that order; every client with a body is a robot here, and robots collide with each other
- * and see each other with their range sensors (RP1 0.60 let them pass through each other unseen).
+ * body, in that order; every client with a body is a robot here. Unless the world is made with
+ * {@code robotsInteract} false, robots collide with each other, see each other with their range
+ * sensors and keep each other from being placed on top of one another (RP1 0.60 let them pass through
+ * each other unseen, as they still do with {@code robotsInteract} false).
  *
  * <p>All changes happen on the thread running the simulation's tasks: in tasks, or in client
  * requests applied at the boundaries between tasks (see {@link rp1.simulator.scheduler.Scheduler}).
@@ -35,12 +36,19 @@ public final class World {
     static final int RANDOM_PLACEMENT_ATTEMPTS = 50;
     /** Margin, metres, around a robot's reach when looking for what it could touch (beyond the 1e-4 m of the clear test). */
     private static final double NEAR = 0.01;
-    /** Below this turn rate, rad/s, a motion is a straight line (docs/behavior.md section 5.2). */
-    private static final double STRAIGHT = 0.0017453;
+    /*
+     * How the body turns a request into a motion (docs/behavior.md section 5.2), as the client library's
+     * MotionRequests does it: the walls offered to the motion's search must be those of the motion it
+     * will actually compute, so these limits must be exactly that class's. A turn rate just under
+     * 0.1 degree per second drives straight, and a wall beyond the arc's circle must not be left out.
+     */
+    /** Durations, speeds and turn rates below this make a null motion. */
+    private static final double NULL_LIMIT = 1.0e-4;
+    /** Below this turn rate, rad/s (0.1 degree per second), a motion is a straight line. */
+    private static final double STRAIGHT = 0.1 * Math.PI / 180.0;
     private static final RsWall[] NO_WALLS = new RsWall[0];
 
     private final RsPlan plan;
-    private final RsWall[] walls;
     private final WallIndex wallIndex;
     private final RobotIndex robotIndex;
     private final Random random;
@@ -62,8 +70,7 @@ public final class World {
      */
     public World(RsPlan plan, Scheduler scheduler, double interval, Random random, boolean robotsInteract) {
         this.plan = plan;
-        this.walls = plan.getWallArray();
-        this.wallIndex = new WallIndex(walls);
+        this.wallIndex = new WallIndex(plan.getWallArray());
         this.robotIndex = new RobotIndex(plan.getBounds());
         this.random = random;
         this.robotsInteract = robotsInteract;
@@ -79,16 +86,6 @@ public final class World {
     /** Told the number of robots on the floor whenever it changes. */
     public void setPlacementListener(IntConsumer listener) {
         placementListener = listener;
-    }
-
-    /** Whether robots collide with, sense and block the placement of one another. */
-    public boolean robotsInteract() {
-        return robotsInteract;
-    }
-
-    /** The number of robots on the floor. */
-    public int getPlacedCount() {
-        return placedCount;
     }
 
     private void setPlaced(Robot r, boolean placed) {
@@ -116,25 +113,9 @@ public final class World {
         return plan;
     }
 
-    /** The plan's walls and obstacles. */
-    RsWall[] getWalls() {
-        return walls;
-    }
-
     /** The robots in the order they joined. */
     public List<Robot> getRobots() {
         return Collections.unmodifiableList(robots);
-    }
-
-    /** The robots currently on the floor, in joining order. */
-    public List<Robot> getPlacedRobots() {
-        List<Robot> placed = new ArrayList<>();
-        for (Robot r : robots) {
-            if (r.isPlaced()) {
-                placed.add(r);
-            }
-        }
-        return placed;
     }
 
     /** A client's body joins the world as an unplaced robot. */
@@ -145,8 +126,8 @@ public final class World {
     }
 
     /**
-     * A robot leaves (its client went away); its paint trails stay on the floor, and the motion task
-     * goes when no robot is left.
+     * A robot leaves (its client went away); its paint trails stay on the floor, and it is not
+     * evaluated again (the motion task goes when no robot is due).
      */
     public void removeRobot(Robot r) {
         if (robots.remove(r)) {
@@ -251,18 +232,21 @@ public final class World {
         }
         double reach = r.shapes().reach() + NEAR;
         RsWall[] nearWalls = wallIndex.near(x - reach, y - reach, x + reach, y + reach);
-        RsWall[] obstacles = robotsInteract ? withRobots(nearWalls, robotsNear(r, x, y, reach, time), time) : nearWalls;
+        RsWall[] obstacles = robotsInteract ? withRobots(nearWalls, shapesOfRobotsNear(r, x, y, reach, time)) : nearWalls;
         return !r.getBody().checkForOverlap(obstacles, new RsTransform(theta, x, y));
     }
 
-    /** The other robots on the floor whose reach comes within {@code reach} of (x, y), in joining order. */
-    private List<Robot> robotsNear(Robot self, double x, double y, double reach, double time) {
-        List<Robot> near = new ArrayList<>();
+    /**
+     * The shapes, as walls, of the other robots on the floor whose reach comes within {@code reach} of
+     * (x, y), in joining order (the index holds only robots on the floor).
+     */
+    private List<RsWall[]> shapesOfRobotsNear(Robot self, double x, double y, double reach, double time) {
+        List<RsWall[]> near = new ArrayList<>();
         for (Robot o : robotIndex.near(x - reach, y - reach, x + reach, y + reach)) {
-            if (o != self && o.isPlaced()) {
+            if (o != self) {
                 RsTransform p = o.poseAt(time);
                 if (Math.hypot(p.m13 - x, p.m23 - y) <= reach + o.shapes().reach()) {
-                    near.add(o);
+                    near.add(o.obstaclesAt(p));
                 }
             }
         }
@@ -304,13 +288,16 @@ public final class World {
         if (!robotsInteract || placedCount < 2) {
             return nearWalls;
         }
-        List<Robot> seen = new ArrayList<>();
+        List<RsWall[]> seen = new ArrayList<>();
         for (Robot o : robotIndex.near(x0, y0, x1, y1)) {
-            if (o != r && o.isPlaced() && r.mightSee(p, o, time)) {
-                seen.add(o);
+            if (o != r) {
+                RsTransform b = o.poseAt(time);
+                if (r.mightSee(p, o, b)) {
+                    seen.add(o.obstaclesAt(b));
+                }
             }
         }
-        return seen.isEmpty() ? nearWalls : withRobots(nearWalls, seen, time);
+        return seen.isEmpty() ? nearWalls : withRobots(nearWalls, seen);
     }
 
     /**
@@ -320,7 +307,7 @@ public final class World {
     RsWall[] wallsForMotion(Robot r, RsMotionRequest q) {
         double v = q.linearVelocity;
         double w = q.rotationalVelocity;
-        if (q.duration < 0.0001 || (Math.abs(v) < 0.0001 && Math.abs(w) < 0.0001)) {
+        if (q.duration < NULL_LIMIT || (Math.abs(v) < NULL_LIMIT && Math.abs(w) < NULL_LIMIT)) {
             return NO_WALLS;
         }
         RsTransform p = r.pose();
@@ -338,11 +325,12 @@ public final class World {
         return wallIndex.near(cx - radius, cy - radius, cx + radius, cy + radius);
     }
 
-    private static RsWall[] withRobots(RsWall[] walls, List<Robot> others, double time) {
+    /** The walls followed by the other robots' shapes (as walls), in order. */
+    private static RsWall[] withRobots(RsWall[] walls, List<RsWall[]> others) {
         List<RsWall> all = new ArrayList<>(walls.length + 4 * others.size());
         Collections.addAll(all, walls);
-        for (Robot o : others) {
-            Collections.addAll(all, o.obstaclesAt(time));
+        for (RsWall[] o : others) {
+            Collections.addAll(all, o);
         }
         return all.toArray(new RsWall[0]);
     }

@@ -50,6 +50,25 @@ class MotionScenarioTest {
         }
     }
 
+    @Test
+    void aTurnRateJustUnderATenthOfADegreePerSecondDrivesStraightIntoAWallInALargePlan() throws Exception {
+        // 25 small walls out of the way make the plan large enough for walls to be looked up near the
+        // motion; at 1 cm/s the arc the server must NOT assume (radius 5.7 m) would not reach x = 8.
+        StringBuilder plan = new StringBuilder(Plans.hallWithBlockAt(8.0));
+        for (int i = 0; i < 25; i++) {
+            double x = 5.0 + 0.1 * i;
+            plan.append("wall bit").append(i).append(" { geometry: ").append(x).append(", 3.8, ").append(x + 0.05)
+                    .append(", 3.8, 0.01; }\n");
+        }
+        try (Scenario s = Scenario.lockstep(plan.toString())) {
+            ScenarioClient c = drive(s, "west", new RsMotionRequest(0.01, 0.0017453, 1000.0));
+            RsMotionHaltedEvent halted = c.await(RsMotionHaltedEvent.class);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, halted.causeOfHalt);
+            assertEquals(8.0 - 0.01 - 0.15, halted.x, 0.002, "stopped by the block, driving straight");
+            assertEquals(2.0, halted.y, 1e-9);
+        }
+    }
+
     @ParameterizedTest(name = "{0} m/s, evaluated every {1} s")
     @CsvSource({"1, 0.05", "5, 0.05", "10, 0.05", "10, 1.0", "10, 0.001"})
     void aOneCentimetreWallStopsTheRobotAtAnySpeedAndModellingRate(double speed, double interval) throws Exception {

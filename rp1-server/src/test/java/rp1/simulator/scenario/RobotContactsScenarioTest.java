@@ -105,4 +105,59 @@ class RobotContactsScenarioTest {
             assertEquals(List.of("bumper true mover @" + stop), contacts(parked, parkedBody));
         }
     }
+
+    @Test
+    void aParkedRobotRunIntoByTwoRobotsHasTheSensorsEachTouchedPressedWithItsName() throws Exception {
+        // The parked robot's bumper (front at x = 5.16) is 3.69 m from the front of a robot coming
+        // from the east, its tail (back at 4.84) 3.70 m from one coming from the west: both contacts
+        // are found at the evaluation at 3.65 s, before the first of the two stops.
+        String plan = PLAN + "placement farWest { geometry: 0.99, 2, 0, 0.1; }\n";
+        try (Scenario s = Scenario.lockstep(plan)) {
+            RsBody parkedBody = Bodies.withBumperAndTail("parked");
+            ScenarioClient parked = s.connect(new ScenarioClient(parkedBody));
+            ScenarioClient fromEast = s.connect(new ScenarioClient(Bodies.round("fromEast")));
+            ScenarioClient fromWest = s.connect(new ScenarioClient(Bodies.round("fromWest")));
+            fromEast.once(RsPlacementEvent.class, e -> fromEast.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
+            fromWest.once(RsPlacementEvent.class, e -> fromWest.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
+            parked.sendPlacementRequest("centre");
+            fromEast.sendPlacementRequest("east");
+            fromWest.sendPlacementRequest("farWest");
+            RsMotionHaltedEvent he = fromEast.await(RsMotionHaltedEvent.class);
+            RsMotionHaltedEvent hw = fromWest.await(RsMotionHaltedEvent.class);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, he.causeOfHalt);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, hw.causeOfHalt);
+            assertEquals(stopTime(3.69), he.simTime, 1e-9);
+            assertEquals(stopTime(3.70), hw.simTime, 1e-9);
+            parked.await(RsContactSensorEvent.class, e -> e.simTime >= hw.simTime);
+            assertEquals(List.of("bumper true fromEast @" + he.simTime, "tail true fromWest @" + hw.simTime),
+                    contacts(parked, parkedBody), "each pressed when the robot touching it stops");
+        }
+    }
+
+    @Test
+    void aParkedRobotRunIntoByTwoRobotsStoppingTogetherHasBothSensorsPressed() throws Exception {
+        // Bumper and tail each 3.69 m from the robot coming at them: both robots stop at 3.689 s.
+        try (Scenario s = Scenario.lockstep(PLAN)) {
+            RsBody parkedBody = Bodies.withBumperAndTail("parked");
+            ScenarioClient parked = s.connect(new ScenarioClient(parkedBody));
+            ScenarioClient fromEast = s.connect(new ScenarioClient(Bodies.round("fromEast")));
+            ScenarioClient fromWest = s.connect(new ScenarioClient(Bodies.round("fromWest")));
+            fromEast.once(RsPlacementEvent.class, e -> fromEast.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
+            fromWest.once(RsPlacementEvent.class, e -> fromWest.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
+            parked.sendPlacementRequest("centre");
+            fromEast.sendPlacementRequest("east");
+            fromWest.sendPlacementRequest("west");
+            RsMotionHaltedEvent he = fromEast.await(RsMotionHaltedEvent.class);
+            RsMotionHaltedEvent hw = fromWest.await(RsMotionHaltedEvent.class);
+            double stop = stopTime(3.69);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, he.causeOfHalt);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, hw.causeOfHalt);
+            assertEquals(stop, he.simTime, 1e-9);
+            assertEquals(stop, hw.simTime, 1e-9);
+            parked.await(RsContactSensorEvent.class, e -> parkedBody.getPartByID(e.sensorID).getName().equals("tail"));
+            parked.await(RsContactSensorEvent.class, e -> parkedBody.getPartByID(e.sensorID).getName().equals("bumper"));
+            assertEquals(List.of("bumper true fromEast @" + stop, "tail true fromWest @" + stop),
+                    contacts(parked, parkedBody), "in part order");
+        }
+    }
 }

@@ -62,6 +62,59 @@ class RobotsScenarioTest {
     }
 
     @Test
+    void robotsSettingOffHeadOnFromAFewCentimetresApartHaltWithoutOverlapping() throws Exception {
+        // Fronts 8 cm apart: they close the gap before either is evaluated again, so the search made
+        // when they set off has to find each other.
+        String plan = Plans.HALL + "placement close { geometry: 1.38, 2, 180, 0.1; }\n";
+        try (Scenario s = Scenario.lockstep(plan)) {
+            ScenarioClient a = s.connect(new ScenarioClient(Bodies.round("a")));
+            ScenarioClient b = s.connect(new ScenarioClient(Bodies.round("b")));
+            a.once(RsPlacementEvent.class, e -> a.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 10.0)));
+            b.once(RsPlacementEvent.class, e -> b.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 10.0)));
+            a.sendPlacementRequest("west");
+            b.sendPlacementRequest("close");
+            RsMotionHaltedEvent ha = a.await(RsMotionHaltedEvent.class);
+            RsMotionHaltedEvent hb = b.await(RsMotionHaltedEvent.class);
+            // Closing at 2 m/s: contact at 0.04 s; both stop at the millisecond before.
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, ha.causeOfHalt);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, hb.causeOfHalt);
+            assertEquals(0.039, ha.simTime, 1e-9);
+            assertEquals(0.039, hb.simTime, 1e-9);
+            assertEquals(1.039, ha.x, 1e-9);
+            assertEquals(1.38 - 0.039, hb.x, 1e-9);
+            double gap = hb.x - ha.x - 0.3;
+            assertTrue(gap > 0 && gap < 0.0025, "2 mm apart: " + gap);
+        }
+    }
+
+    @Test
+    void aRobotSettingOffTowardsAMovingRobotBetweenItsEvaluationsHaltsBothWithoutOverlapping() throws Exception {
+        // a creeps east at 1 cm/s, evaluated at 0, 0.05, ...; b, 1 cm ahead of it, sets off towards it
+        // at 0.025 s, half a step into a's grid, and would close the gap before a's next evaluation.
+        String plan = Plans.HALL + "placement close { geometry: 1.31, 2, 180, 0.1; }\n";
+        try (Scenario s = Scenario.lockstep(plan)) {
+            ScenarioClient a = s.connect(new ScenarioClient(Bodies.round("a")));
+            ScenarioClient b = s.connect(new ScenarioClient(Bodies.round("b")));
+            a.once(RsPlacementEvent.class, e -> a.sendMotionRequest(new RsMotionRequest(0.01, 0.0, 10.0)));
+            b.once(RsPlacementEvent.class, e -> b.sendTimeoutRequest(0.025));
+            b.once(rp1.rossum.event.RsTimeoutEvent.class, e -> b.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 10.0)));
+            a.sendPlacementRequest("west");
+            b.sendPlacementRequest("close");
+            RsMotionHaltedEvent ha = a.await(RsMotionHaltedEvent.class);
+            RsMotionHaltedEvent hb = b.await(RsMotionHaltedEvent.class);
+            // Fronts at 1.15 + 0.01 t and 1.16 - (t - 0.025): contact at 0.035 / 1.01 = 0.03465 s.
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, ha.causeOfHalt);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, hb.causeOfHalt);
+            assertEquals(0.034, ha.simTime, 1e-9);
+            assertEquals(0.034, hb.simTime, 1e-9);
+            assertEquals(1.0 + 0.01 * 0.034, ha.x, 1e-9);
+            assertEquals(1.31 - 0.009, hb.x, 1e-9);
+            double gap = hb.x - ha.x - 0.3;
+            assertTrue(gap > 0 && gap < 0.0025, "less than 2.5 mm apart, not overlapping: " + gap);
+        }
+    }
+
+    @Test
     void aRobotDrivingIntoAParkedRobotStopsAndTheParkedOneHearsNothing() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient parked = s.connect(new ScenarioClient(Bodies.round("parked")));
