@@ -28,6 +28,8 @@ final class MotionStepper implements Task {
     private final World world;
     private final Scheduler scheduler;
     private final double interval;
+    /** Runs of this task so far: the order in which motions started and searches were made. */
+    private long runs;
     private final PriorityQueue<Robot> due = new PriorityQueue<>(DUE);
     private TaskHandle queued = TaskHandle.NONE;
     private double queuedTime = Double.NaN;
@@ -87,6 +89,7 @@ final class MotionStepper implements Task {
 
     @Override
     public void run(double time) {
+        runs++;
         List<Robot> group = new ArrayList<>();
         while (!due.isEmpty() && due.peek().nextEvaluation() <= time) {
             Robot r = due.poll();
@@ -103,11 +106,12 @@ final class MotionStepper implements Task {
             r.advance(time);
             if (r.hasPendingRequest()) {
                 r.startPendingMotion(time, world.wallsForMotion(r, r.pendingRequest()));
+                r.setMotionStartedIn(runs);
                 // Filed where the new motion can take it before any contact search looks it up.
                 world.indexRobot(r, time, interval);
             }
         }
-        world.searchContacts(active, time, time + interval + RobotContacts.LOOK_AHEAD);
+        world.searchContacts(active, time, time + interval + RobotContacts.LOOK_AHEAD, runs);
         for (Robot r : active) {
             r.sense(time, world.getPlan(), world.obstaclesFor(r, time));
             double next = r.finish(time, interval);

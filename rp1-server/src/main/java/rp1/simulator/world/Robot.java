@@ -54,8 +54,10 @@ public final class Robot {
      * and the time it stops, when the sensor is pressed; in the order the contacts were found.
      */
     private final List<Touch> touched = new ArrayList<>();
-    /** Whether this robot has searched for contacts in the evaluation under way ({@link RobotContacts}). */
-    private boolean searched;
+    /** The motion task's run ({@link MotionStepper}) in which this robot's current motion started. */
+    private long motionStartedIn = -1;
+    /** The motion task's run in which this robot last searched for contacts ({@link RobotContacts}). */
+    private long searchedIn = -1;
 
     Robot(int number, RsBody body, EventSink events) {
         this.number = number;
@@ -324,13 +326,20 @@ public final class Robot {
         touched.removeIf(t -> t.time <= time);
     }
 
-    /** Whether this robot has searched for contacts in the evaluation under way. */
-    boolean hasSearched() {
-        return searched;
+    long motionStartedIn() {
+        return motionStartedIn;
     }
 
-    void setSearched(boolean searched) {
-        this.searched = searched;
+    void setMotionStartedIn(long run) {
+        motionStartedIn = run;
+    }
+
+    long searchedIn() {
+        return searchedIn;
+    }
+
+    void setSearchedIn(long run) {
+        searchedIn = run;
     }
 
     /** A halt request: any waiting request is dropped and a motion under way stops at {@code time}. */

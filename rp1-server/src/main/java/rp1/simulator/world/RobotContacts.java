@@ -44,31 +44,36 @@ final class RobotContacts {
      * Searches [from, to] for contacts between each moving robot of {@code evaluated} (the robots
      * evaluated now, in joining order, their motions started) and the robots near it, pair by pair in
      * joining order. A moving robot is evaluated every interval and searches the interval after each
-     * evaluation, so its evaluations cover all the time it moves. Each robot has its own evaluation
-     * times, so a pair is searched by each of its moving robots when that one is evaluated (the other
-     * may have searched the pair before this one's motion started); only a pair of two moving robots
-     * evaluated now is searched once, by the first of them. A robot stopped here, or run into while at
-     * rest, is due for evaluation when that happens.
+     * evaluation, so its evaluations cover all the time it moves: a pair of moving robots is searched
+     * by the one that joined first, and by the other only if that one's last search could not know
+     * the other's current motion (it started in a later run of the motion task: each robot has its own
+     * evaluation times). A robot stopped here, or run into while at rest, is due for evaluation when
+     * that happens.
+     *
+     * @param run the motion task's run under way (motions started in it precede every search in it)
      */
-    static void resolve(List<Robot> evaluated, RobotIndex index, double from, double to, MotionStepper stepper) {
+    static void resolve(List<Robot> evaluated, RobotIndex index, double from, double to, long run,
+                        MotionStepper stepper) {
         for (Robot a : evaluated) {
             if (!a.isMoving() || a.shapes().isEmpty()) {
                 continue;
             }
-            a.setSearched(true);
+            a.setSearchedIn(run);
             double reach = a.shapes().reach() + RobotIndex.speedBound(a) * (to - from) + SAMPLE_SPACING;
             RsTransform p = a.poseAt(from);
             for (Robot b : index.near(p.m13 - reach, p.m23 - reach, p.m13 + reach, p.m23 + reach)) {
-                if (b == a || b.hasSearched()) {
+                if (b == a || coveredBy(b, a)) {
                     continue;
                 }
                 boolean aFirst = a.getNumber() < b.getNumber();
                 resolvePair(aFirst ? a : b, aFirst ? b : a, from, to, stepper);
             }
         }
-        for (Robot a : evaluated) {
-            a.setSearched(false);
-        }
+    }
+
+    /** Whether moving robot {@code b}'s own searches already cover the pair for {@code a}. */
+    private static boolean coveredBy(Robot b, Robot a) {
+        return b.isMoving() && b.getNumber() < a.getNumber() && b.searchedIn() >= a.motionStartedIn();
     }
 
     private static void resolvePair(Robot a, Robot b, double from, double to, MotionStepper stepper) {

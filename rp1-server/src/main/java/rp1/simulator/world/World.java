@@ -257,9 +257,9 @@ public final class World {
      * At a motion evaluation: searches the coming interval [from, to] for contacts between the robots
      * evaluated and the robots near them (if robots interact).
      */
-    void searchContacts(List<Robot> evaluated, double from, double to) {
+    void searchContacts(List<Robot> evaluated, double from, double to, long run) {
         if (robotsInteract && placedCount > 1) {
-            RobotContacts.resolve(evaluated, robotIndex, from, to, stepper);
+            RobotContacts.resolve(evaluated, robotIndex, from, to, run, stepper);
         }
     }
 
