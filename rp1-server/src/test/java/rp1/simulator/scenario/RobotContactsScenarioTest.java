@@ -106,6 +106,27 @@ class RobotContactsScenarioTest {
         }
     }
 
+    /** A robot with a bumper and a tail parked at "centre", run into from the east and from {@code westPlacement}. */
+    private record RunInto(ScenarioClient parked, RsBody parkedBody, RsMotionHaltedEvent fromEast,
+                           RsMotionHaltedEvent fromWest) {
+        static RunInto byTwo(Scenario s, String westPlacement) throws Exception {
+            RsBody parkedBody = Bodies.withBumperAndTail("parked");
+            ScenarioClient parked = s.connect(new ScenarioClient(parkedBody));
+            ScenarioClient east = s.connect(new ScenarioClient(Bodies.round("fromEast")));
+            ScenarioClient west = s.connect(new ScenarioClient(Bodies.round("fromWest")));
+            east.once(RsPlacementEvent.class, e -> east.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
+            west.once(RsPlacementEvent.class, e -> west.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
+            parked.sendPlacementRequest("centre");
+            east.sendPlacementRequest("east");
+            west.sendPlacementRequest(westPlacement);
+            RunInto r = new RunInto(parked, parkedBody, east.await(RsMotionHaltedEvent.class),
+                    west.await(RsMotionHaltedEvent.class));
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, r.fromEast.causeOfHalt);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, r.fromWest.causeOfHalt);
+            return r;
+        }
+    }
+
     @Test
     void aParkedRobotRunIntoByTwoRobotsHasTheSensorsEachTouchedPressedWithItsName() throws Exception {
         // The parked robot's bumper (front at x = 5.16) is 3.69 m from the front of a robot coming
@@ -113,24 +134,13 @@ class RobotContactsScenarioTest {
         // are found at the evaluation at 3.65 s, before the first of the two stops.
         String plan = PLAN + "placement farWest { geometry: 0.99, 2, 0, 0.1; }\n";
         try (Scenario s = Scenario.lockstep(plan)) {
-            RsBody parkedBody = Bodies.withBumperAndTail("parked");
-            ScenarioClient parked = s.connect(new ScenarioClient(parkedBody));
-            ScenarioClient fromEast = s.connect(new ScenarioClient(Bodies.round("fromEast")));
-            ScenarioClient fromWest = s.connect(new ScenarioClient(Bodies.round("fromWest")));
-            fromEast.once(RsPlacementEvent.class, e -> fromEast.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
-            fromWest.once(RsPlacementEvent.class, e -> fromWest.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
-            parked.sendPlacementRequest("centre");
-            fromEast.sendPlacementRequest("east");
-            fromWest.sendPlacementRequest("farWest");
-            RsMotionHaltedEvent he = fromEast.await(RsMotionHaltedEvent.class);
-            RsMotionHaltedEvent hw = fromWest.await(RsMotionHaltedEvent.class);
-            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, he.causeOfHalt);
-            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, hw.causeOfHalt);
-            assertEquals(stopTime(3.69), he.simTime, 1e-9);
-            assertEquals(stopTime(3.70), hw.simTime, 1e-9);
-            parked.await(RsContactSensorEvent.class, e -> e.simTime >= hw.simTime);
-            assertEquals(List.of("bumper true fromEast @" + he.simTime, "tail true fromWest @" + hw.simTime),
-                    contacts(parked, parkedBody), "each pressed when the robot touching it stops");
+            RunInto r = RunInto.byTwo(s, "farWest");
+            assertEquals(stopTime(3.69), r.fromEast().simTime, 1e-9);
+            assertEquals(stopTime(3.70), r.fromWest().simTime, 1e-9);
+            r.parked().await(RsContactSensorEvent.class, e -> e.simTime >= r.fromWest().simTime);
+            assertEquals(List.of("bumper true fromEast @" + r.fromEast().simTime,
+                    "tail true fromWest @" + r.fromWest().simTime),
+                    contacts(r.parked(), r.parkedBody()), "each pressed when the robot touching it stops");
         }
     }
 
@@ -138,26 +148,15 @@ class RobotContactsScenarioTest {
     void aParkedRobotRunIntoByTwoRobotsStoppingTogetherHasBothSensorsPressed() throws Exception {
         // Bumper and tail each 3.69 m from the robot coming at them: both robots stop at 3.689 s.
         try (Scenario s = Scenario.lockstep(PLAN)) {
-            RsBody parkedBody = Bodies.withBumperAndTail("parked");
-            ScenarioClient parked = s.connect(new ScenarioClient(parkedBody));
-            ScenarioClient fromEast = s.connect(new ScenarioClient(Bodies.round("fromEast")));
-            ScenarioClient fromWest = s.connect(new ScenarioClient(Bodies.round("fromWest")));
-            fromEast.once(RsPlacementEvent.class, e -> fromEast.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
-            fromWest.once(RsPlacementEvent.class, e -> fromWest.sendMotionRequest(new RsMotionRequest(1.0, 0.0, 5.0)));
-            parked.sendPlacementRequest("centre");
-            fromEast.sendPlacementRequest("east");
-            fromWest.sendPlacementRequest("west");
-            RsMotionHaltedEvent he = fromEast.await(RsMotionHaltedEvent.class);
-            RsMotionHaltedEvent hw = fromWest.await(RsMotionHaltedEvent.class);
+            RunInto r = RunInto.byTwo(s, "west");
             double stop = stopTime(3.69);
-            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, he.causeOfHalt);
-            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, hw.causeOfHalt);
-            assertEquals(stop, he.simTime, 1e-9);
-            assertEquals(stop, hw.simTime, 1e-9);
-            parked.await(RsContactSensorEvent.class, e -> parkedBody.getPartByID(e.sensorID).getName().equals("tail"));
-            parked.await(RsContactSensorEvent.class, e -> parkedBody.getPartByID(e.sensorID).getName().equals("bumper"));
+            assertEquals(stop, r.fromEast().simTime, 1e-9);
+            assertEquals(stop, r.fromWest().simTime, 1e-9);
+            RsBody body = r.parkedBody();
+            r.parked().await(RsContactSensorEvent.class, e -> body.getPartByID(e.sensorID).getName().equals("tail"));
+            r.parked().await(RsContactSensorEvent.class, e -> body.getPartByID(e.sensorID).getName().equals("bumper"));
             assertEquals(List.of("bumper true fromEast @" + stop, "tail true fromWest @" + stop),
-                    contacts(parked, parkedBody), "in part order");
+                    contacts(r.parked(), body), "in part order");
         }
     }
 }
