@@ -8,9 +8,11 @@ event is acknowledged after all its handlers have run, even when it has none.
 
 import itertools
 import logging
+import select
 import socket
 import struct
 import threading
+import time
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Type, TypeVar, Union
 
 from . import codes
@@ -35,6 +37,8 @@ Handler = Callable[[Any], None]
 
 _I32 = struct.Struct(">i")
 _BUFFER_SIZE = 65536
+#: How long an incomplete large message waits for more bytes before it is decoded again anyway.
+_QUIET_SECONDS = 0.05
 
 #: The body part class whose sensor a sensor event reports.
 _SENSOR_CLASSES: Dict[Type[Event], Type[Sensor]] = {
@@ -57,10 +61,16 @@ class Client:
     127.0.0.1:7758). Register handlers after :meth:`connect`: a subscription that would be sent
     before the connection exists is skipped, as in the Java library. The ``send_...`` methods may be
     called from any thread; handlers run on the thread that calls :meth:`run`.
+
+    ``max_message_bytes`` bounds the bytes held for one incoming message (by default the Java
+    library's limit, 4 MiB): a longer one is a :class:`ProtocolError` naming the field being read.
     """
 
     def __init__(self, host: Optional[str] = None, port: Optional[int] = None, *,
-                 settings: Optional[ClientSettings] = None) -> None:
+                 settings: Optional[ClientSettings] = None,
+                 max_message_bytes: int = codes.MAX_MESSAGE_BYTES) -> None:
+        if isinstance(max_message_bytes, bool) or not isinstance(max_message_bytes, int) or max_message_bytes < 1:
+            raise ValueError(f"max_message_bytes must be a positive int, got {max_message_bytes!r}")
         if host is None or port is None:
             settings = settings or ClientSettings.from_working_directory()
             host = settings.host_name if host is None else host
@@ -85,6 +95,8 @@ class Client:
         self._view = memoryview(self._buf)
         self._start = 0
         self._end = 0
+        self.max_message_bytes = max_message_bytes
+        self._handshake_deadline: Optional[float] = None
 
     # ------------------------------------------------------------------------------------------
     # Connection
@@ -92,22 +104,35 @@ class Client:
     def connect(self, timeout: Optional[float] = None) -> "Client":
         """Opens a TCP connection to ``host:port`` and performs the CONNECT/ACCEPT handshake.
 
+        ``timeout`` (seconds) bounds the whole of it: the TCP connection and the server's ACCEPT
+        must both arrive within it. None waits for ever. Once connected, reading events is never
+        timed out (the simulation may stand still for as long as it likes).
+
         Returns the client, so that ``Client(...).connect()`` reads naturally.
 
         Raises:
-            ConnectionError: if the server cannot be reached or closes the connection at once.
+            ConnectionError: if the server cannot be reached, closes the connection at once, or does
+                not complete the handshake within ``timeout``.
             ProtocolError: if its answer is not an ACCEPT.
         """
+        deadline = None if timeout is None else time.monotonic() + timeout
         try:
             sock = socket.create_connection((self.host, self.port), timeout=timeout)
         except OSError as e:
             raise ConnectionError(f"cannot connect to the RP1 server at {self.host}:{self.port}: {e}") from e
-        sock.settimeout(None)
+        self._handshake_deadline = deadline
         try:
             self.attach(sock)
+        except socket.timeout as e:
+            sock.close()
+            raise ConnectionError(f"the RP1 server at {self.host}:{self.port} did not complete the handshake "
+                                  f"(no ACCEPT) within {timeout} s") from e
         except BaseException:
             sock.close()
             raise
+        finally:
+            self._handshake_deadline = None
+        sock.settimeout(None)
         log.info("Connected to RP1 server at %s:%s", self.host, self.port)
         return self
 
@@ -434,15 +459,29 @@ class Client:
 
     def _read(self, decode: Callable[[Reader], Any]) -> Any:
         """Decodes one message from the buffered input, reading more until it is complete.
-        Returns None if the stream ended cleanly before the message's first byte."""
+        Returns None if the stream ended cleanly before the message's first byte.
+
+        An incomplete message is decoded again from its start, so a large one is retried only when
+        its bytes have doubled or the stream has gone quiet: the work stays linear in its size.
+
+        Raises:
+            ProtocolError: if the message is malformed, or longer than ``max_message_bytes``
+                (naming the field that crosses the limit).
+        """
+        retry_at = 0
         while True:
-            if self._start < self._end:
-                r = Reader(self._buf, self._start, self._end)
+            buffered = self._end - self._start
+            if buffered and (buffered >= retry_at or not self._more_coming()):
+                r = Reader(self._buf, self._start, self._start + min(buffered, self.max_message_bytes))
                 try:
                     result = decode(r)
                 except ProtocolError as e:
                     if not e.truncated:
                         raise
+                    if buffered >= self.max_message_bytes:
+                        raise ProtocolError(e.field, f"message longer than {self.max_message_bytes} bytes "
+                                                     "(max_message_bytes)") from None
+                    retry_at = min(2 * buffered, self.max_message_bytes) if buffered >= _BUFFER_SIZE else 0
                     if not self._fill():
                         if self._closed:
                             return None
@@ -451,7 +490,17 @@ class Client:
                 self._start = r.pos
                 return result
             if not self._fill():
-                return None
+                if not buffered:
+                    return None
+                retry_at = 0
+
+    def _more_coming(self) -> bool:
+        """Whether more bytes arrive within a moment (False for a socket double that cannot tell)."""
+        try:
+            readable, _, _ = select.select([self._sock], [], [], _QUIET_SECONDS)
+        except (TypeError, ValueError, OSError):
+            return False
+        return bool(readable)
 
     def _fill(self) -> bool:
         """Reads what the socket has into the buffer, after the unread bytes; False at end of stream."""
@@ -469,6 +518,11 @@ class Client:
         sock = self._sock
         if sock is None or self._closed:
             return False
+        if self._handshake_deadline is not None:
+            remaining = self._handshake_deadline - time.monotonic()
+            if remaining <= 0:
+                raise socket.timeout("handshake deadline passed")
+            sock.settimeout(remaining)
         n = sock.recv_into(self._view[end:])
         if n == 0:
             return False

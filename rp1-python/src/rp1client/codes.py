@@ -82,6 +82,9 @@ MAX_GEOMETRY_DOUBLES = 1 << 20
 MAX_COLORS = 4096
 MAX_ACTUATOR_PARAMETERS = 1024
 MAX_ENCODERS = 4096
+#: The longest message the client waits for the rest of, as the Java library's buffering reader
+#: (``WireLimits.MAX_MESSAGE_BYTES``): the bytes held for one message stay bounded whatever a peer sends.
+MAX_MESSAGE_BYTES = 4 << 20
 
 
 def describe_transaction(code: int) -> str:

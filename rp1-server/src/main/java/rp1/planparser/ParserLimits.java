@@ -12,6 +12,12 @@ final class ParserLimits {
     static final int MAX_LIST_NUMBERS = 100_000;
     /** Objects in one plan; the protocol layer refuses more. */
     static final int MAX_OBJECTS = 1 << 20;
+    /**
+     * Metres from the origin, along x and along y, within which every length and every object of a plan
+     * lies (1000 km: no building comes near it). It bounds the plan's extent to 2000 km a side, which
+     * keeps the simulator's arithmetic and its spatial indexes sound.
+     */
+    static final double MAX_COORDINATE = 1.0e6;
 
     private ParserLimits() {
     }

@@ -10,6 +10,7 @@ import rp1.rossum.RsKilometers;
 import rp1.rossum.RsMeters;
 import rp1.rossum.RsObject;
 import rp1.rossum.RsPlan;
+import rp1.rossum.RsRectangle;
 import rp1.rossum.RsUnits;
 
 /**
@@ -126,7 +127,7 @@ final class PlanParser {
         while (true) {
             Token t = lexer.nextInStatement();
             if (t.is('}')) {
-                add(d.finish(t, lexer), t);
+                add(d.keyword(), d.finish(t, lexer), t);
                 return;
             }
             if (t.isIdentifier()) {
@@ -173,10 +174,29 @@ final class PlanParser {
         return name;
     }
 
-    private void add(RsObject object, Token close) throws RsParsingException {
+    private void add(String keyword, RsObject object, Token close) throws RsParsingException {
         if (plan.getObjectCount() == ParserLimits.MAX_OBJECTS) {
             throw lexer.error(close, "Too many objects: a plan may declare at most " + ParserLimits.MAX_OBJECTS);
         }
+        checkWithinLimit(keyword, object, close);
         plan.addObject(object);
+    }
+
+    /**
+     * Every number was within the limit, but a radius, a thickness or an offset can carry an object
+     * beyond it: the object as a whole must lie inside it too.
+     */
+    private void checkWithinLimit(String keyword, RsObject object, Token close) throws RsParsingException {
+        RsRectangle b = object.getBounds();
+        if (b.isPopulated() && !(withinLimit(b.x) && withinLimit(b.y) && withinLimit(b.x + b.width)
+                && withinLimit(b.y + b.height))) {
+            throw lexer.error(close, "Object out of range: " + keyword + " " + object.getName()
+                    + " covers x " + b.x + " to " + (b.x + b.width) + " m, y " + b.y + " to " + (b.y + b.height)
+                    + " m, beyond " + ValueReader.LIMIT_IN_WORDS);
+        }
+    }
+
+    private static boolean withinLimit(double coordinate) {
+        return Math.abs(coordinate) <= ParserLimits.MAX_COORDINATE;
     }
 }

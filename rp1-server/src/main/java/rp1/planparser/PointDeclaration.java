@@ -58,7 +58,7 @@ final class PointDeclaration extends Declaration {
     @Override
     protected boolean specificItem(Token item, ValueReader in) throws IOException, RsParsingException {
         if (item.text().equals("geometry")) {
-            geometry = convert(in.numbers(kind.count, kind.countProblem, kind.meaning), in, item);
+            geometry = convert(in.numbers(kind.count, kind.countProblem, kind.meaning), in);
             return true;
         }
         if (item.text().equals("lineWidth") && kind.hasLineWidth) {
@@ -74,10 +74,10 @@ final class PointDeclaration extends Declaration {
     }
 
     /** Lengths to metres; a placement's orientation (third value) from degrees to radians, unnormalized. */
-    private double[] convert(double[] v, ValueReader in, Token at) throws RsParsingException {
-        double[] g = in.lengths(v, at);
-        if (kind == Kind.PLACEMENT) {
-            g[2] = v[2] * Math.PI / 180.0;
+    private double[] convert(NumberList v, ValueReader in) throws RsParsingException {
+        double[] g = new double[v.values().length];
+        for (int i = 0; i < g.length; i++) {
+            g[i] = kind == Kind.PLACEMENT && i == 2 ? v.values()[2] * Math.PI / 180.0 : in.length(v, i);
         }
         return g;
     }

@@ -58,13 +58,13 @@ final class PolygonDeclaration extends Declaration {
                 polygon(item, in);
                 return true;
             case "offset":
-                double[] d = in.numbers(2, "Invalid number of parameters in numeric specification", "dx, dy");
-                offsetX = in.length(d[0], item);
-                offsetY = in.length(d[1], item);
+                NumberList d = in.numbers(2, "Invalid number of parameters in numeric specification", "dx, dy");
+                offsetX = in.length(d, 0);
+                offsetY = in.length(d, 1);
                 return true;
             case "orientation":
                 orientationDegrees = in.numbers(1, "Invalid number of parameters in numeric specification",
-                        "degrees")[0];
+                        "degrees").values()[0];
                 return true;
             case "region":
                 if (!paint) {
@@ -86,7 +86,7 @@ final class PolygonDeclaration extends Declaration {
                     + " least 3 coordinate pairs): expected an even count of 6 or more, found " + v.length);
         }
         checkNotBoth(polygonItem, item, in);
-        vertices = in.lengths(v, list.end());
+        vertices = in.lengths(list);
         geometryItem = item;
         shapeItem = item;
     }

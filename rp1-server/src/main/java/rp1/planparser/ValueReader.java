@@ -14,6 +14,10 @@ import rp1.rossum.RsUnits;
  * units to metres.
  */
 final class ValueReader {
+    /** How messages state {@link ParserLimits#MAX_COORDINATE}. */
+    static final String LIMIT_IN_WORDS = "the limit of 1000000 m (1000 km) from the origin for any coordinate or"
+            + " length of a plan";
+
     private final PlanLexer lexer;
     private RsUnits units = new RsMeters();
 
@@ -36,6 +40,7 @@ final class ValueReader {
      */
     NumberList numbers() throws IOException, RsParsingException {
         double[] values = new double[8];
+        Token[] tokens = new Token[8];
         int n = 0;
         while (true) {
             Token t = lexer.nextInStatement();
@@ -52,12 +57,14 @@ final class ValueReader {
             }
             if (n == values.length) {
                 values = Arrays.copyOf(values, 2 * n);
+                tokens = Arrays.copyOf(tokens, 2 * n);
             }
+            tokens[n] = t;
             values[n++] = negative ? -t.number() : t.number();
             Token separator = lexer.nextInStatement();
             if (separator.is(';') || separator.is('}')) {
                 lexer.pushBack(separator);
-                return new NumberList(Arrays.copyOf(values, n), separator);
+                return new NumberList(Arrays.copyOf(values, n), Arrays.copyOf(tokens, n), separator);
             }
             if (!separator.is(',')) {
                 throw lexer.error(separator, "Invalid syntax where comma expected between numbers, found "
@@ -72,29 +79,38 @@ final class ValueReader {
      * @param problem the start of the message if the count is wrong
      * @param meaning what the numbers are, for the message
      */
-    double[] numbers(int count, String problem, String meaning) throws IOException, RsParsingException {
+    NumberList numbers(int count, String problem, String meaning) throws IOException, RsParsingException {
         NumberList list = numbers();
         if (list.values().length != count) {
             throw lexer.error(list.end(), problem + ": expected " + count + " (" + meaning + "), found "
                     + list.values().length);
         }
-        return list.values();
+        return list;
     }
 
-    /** {@code value} in the current units, in metres. */
+    /**
+     * {@code value} in the current units, in metres; {@code at} is the number it was written as. A
+     * length beyond {@link ParserLimits#MAX_COORDINATE} is refused there.
+     */
     double length(double value, Token at) throws RsParsingException {
         double metres = units.userToInternal(value);
-        if (!Double.isFinite(metres)) {
-            throw lexer.error(at, "Value out of range: " + value + " " + units.getName() + " is too large");
+        if (!(Math.abs(metres) <= ParserLimits.MAX_COORDINATE)) {
+            throw lexer.error(at, "Value out of range: " + (value < 0 ? "-" : "") + at.text() + " "
+                    + units.getName() + " is beyond " + LIMIT_IN_WORDS);
         }
         return metres;
     }
 
-    /** The values, in the current units, in metres. */
-    double[] lengths(double[] values, Token at) throws RsParsingException {
-        double[] metres = new double[values.length];
-        for (int i = 0; i < values.length; i++) {
-            metres[i] = length(values[i], at);
+    /** The {@code i}th number of {@code list} as a length in metres. */
+    double length(NumberList list, int i) throws RsParsingException {
+        return length(list.values()[i], list.tokens()[i]);
+    }
+
+    /** The numbers of {@code list}, lengths in the current units, in metres. */
+    double[] lengths(NumberList list) throws RsParsingException {
+        double[] metres = new double[list.values().length];
+        for (int i = 0; i < metres.length; i++) {
+            metres[i] = length(list, i);
         }
         return metres;
     }

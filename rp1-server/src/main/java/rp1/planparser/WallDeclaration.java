@@ -41,7 +41,7 @@ final class WallDeclaration extends Declaration {
             throw in.lexer().error(list.end(), "Invalid number of parameters in geometry specification: a wall"
                     + " takes 5 numbers (x0, y0, x1, y1, thickness), found " + v.length);
         }
-        double[] g = in.lengths(v, list.end());
+        double[] g = in.lengths(list);
         if (g[4] <= MIN_SIZE) {
             throw in.lexer().error(list.end(), "Invalid thickness specification for wall: expected a thickness"
                     + " greater than zero, found " + v[4]);

@@ -22,18 +22,43 @@ final class Grid {
     private int[] marks = new int[16];
     private int stamp;
 
-    /** A grid over {@code area} with cells of {@code cellSize} metres (at most {@code maxCells} cells in all). */
+    /**
+     * A grid over {@code area} with cells of {@code cellSize} metres, or larger ones where that would
+     * make more than {@code maxCells} cells in all: however large or long the area, the grid's memory
+     * stays bounded.
+     *
+     * @throws IllegalArgumentException if the area is not finite
+     */
     Grid(RsRectangle area, double cellSize, int maxCells) {
+        if (!(Double.isFinite(area.x) && Double.isFinite(area.y) && Double.isFinite(area.width)
+                && Double.isFinite(area.height))) {
+            throw new IllegalArgumentException("a grid needs a finite area, not " + area);
+        }
         double width = Math.max(area.width, 1e-6);
         double height = Math.max(area.height, 1e-6);
-        double size = Math.max(cellSize, Math.sqrt(width * height / maxCells));
+        double spread = width * height;
+        double even = Math.sqrt(Double.isFinite(spread) ? spread / maxCells : width / maxCells * height);
+        double size = Math.max(Math.max(cellSize, even), Math.max(width, height) / maxCells);
+        while (cellsAcross(width, size) * cellsAcross(height, size) > maxCells) {
+            size *= 1.25;
+        }
         this.minX = area.x;
         this.minY = area.y;
         this.cell = size;
-        this.cols = Math.max(1, (int) Math.ceil(width / size));
-        this.rows = Math.max(1, (int) Math.ceil(height / size));
+        this.cols = (int) cellsAcross(width, size);
+        this.rows = (int) cellsAcross(height, size);
         this.cells = new int[cols * rows][];
         this.counts = new int[cols * rows];
+    }
+
+    /** Cells of {@code size} needed to cover {@code length}, as a double so that no product overflows. */
+    private static double cellsAcross(double length, double size) {
+        return Math.max(1.0, Math.ceil(length / size));
+    }
+
+    /** How many cells the grid has. */
+    int cellCount() {
+        return cells.length;
     }
 
     private int col(double x) {

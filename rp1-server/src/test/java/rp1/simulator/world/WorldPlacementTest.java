@@ -46,7 +46,7 @@ class WorldPlacementTest {
     }
 
     /** Collects what a robot is sent. */
-    private static final class Inbox implements EventSink {
+    static final class Inbox implements EventSink {
         final List<RsEvent> events = new ArrayList<>();
 
         @Override
