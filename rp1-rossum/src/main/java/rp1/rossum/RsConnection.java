@@ -73,8 +73,9 @@ public class RsConnection extends RsProtocol implements Runnable {
     private int bodiesReceived;
     /**
      * Subscriptions as (event code, index) keys. RP1 0.60 kept a fixed table of indices 0..1000, so
-     * sensors whose part id exceeded 1000 could never subscribe; part ids come from one process-wide
-     * counter, and with many robots in one process they pass 1000 quickly, so any index is accepted.
+     * sensors whose part id exceeded 1000 could never subscribe (its process-wide part counter passed
+     * 1000 quickly with many robots in one process); a client may give a part any id, so any index is
+     * accepted.
      */
     private final Set<Long> subscriptions = new HashSet<>();
     /** Keeps interlock numbers in increasing order on this connection's stream. */
