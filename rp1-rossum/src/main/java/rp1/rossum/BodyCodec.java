@@ -13,8 +13,9 @@ import java.util.List;
  * <p>Deliberate differences from RP1 0.60: parts that cannot be described on the wire
  * ({@link RsBodyArt}, a bare {@link RsActuator}) are left out of the message instead of being sent as
  * "undefined" records, which made the original simulator exit; a body with nothing to send is refused
- * before any byte is written. Decoding gives every part the id the sender used, and the wheels of a
- * wheel system the ids following the system's, without touching this process's part counter.
+ * before any byte is written. Encoding numbers the body's parts if they have no ids yet
+ * ({@link PartNumbering}); decoding gives every part the id the sender used, and the wheels of a
+ * wheel system the ids following the system's.
  */
 final class BodyCodec {
     /** Marks an empty part slot on the wire; nothing follows it. */
@@ -64,6 +65,7 @@ final class BodyCodec {
 
     /** Writes the payload of a body specification; see {@link #encode(RsBody)}. */
     static void encode(WireOut out, RsBody body) {
+        PartNumbering.number(body);
         List<RsBodyPart> parts = new ArrayList<>();
         for (RsBodyPart p : body.getBodyPartArray()) {
             if (partType(p) != RsProtocol.UNDEFINED_BODY_PART) {
@@ -199,16 +201,18 @@ final class BodyCodec {
         return body;
     }
 
-    /** Builds the part so that it, and any wheels built with it, get the transmitted ids. */
+    /** Builds the part with the transmitted id, and the wheels of a wheel system with the ids following it. */
     private static RsBodyPart readPartWithId(WireIn in, String field, int id, int type) throws IOException {
-        RsBodyPart.beginDecodingIds(id);
-        try {
-            RsBodyPart part = readPart(in, field, type);
-            readNameAndColors(in, field, part);
-            return part;
-        } finally {
-            RsBodyPart.endDecodingIds();
+        RsBodyPart part = readPart(in, field, type);
+        part.assignID(id);
+        if (part instanceof RsWheelSystem) {
+            RsWheel[] wheels = ((RsWheelSystem) part).wheels;
+            for (int k = 0; k < wheels.length; k++) {
+                wheels[k].assignID(id + 1 + k);
+            }
         }
+        readNameAndColors(in, field, part);
+        return part;
     }
 
     private static RsBodyPart readPart(WireIn in, String f, int type) throws IOException {

@@ -33,7 +33,7 @@ final class DirectLink {
 
     /**
      * The client's body, as the server would decode it from the wire: every part keeps the id it has
-     * in the client's body, and the process-wide part counter is not touched (decoding never does).
+     * in the client's body.
      */
     void body(RsBody body) {
         server.bodyReceived(BodyCodec.copy(body));

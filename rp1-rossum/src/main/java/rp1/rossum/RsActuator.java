@@ -21,6 +21,7 @@ public class RsActuator extends RsBodyPart {
     /** Adds a sub-part (drawn after those added before it). */
     void addSubPart(RsBodyPart part) {
         partsList.add(part);
+        part.joined(this);
         partsArray = partsList.toArray(new RsBodyPart[0]);
     }
 

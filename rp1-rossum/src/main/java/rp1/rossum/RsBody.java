@@ -19,8 +19,6 @@ import rp1.rossum.request.RsMotionRequest;
 public class RsBody extends RsComponent {
     private static final long serialVersionUID = 1L;
 
-    private static int lastBodyID;
-
     public String name;
     /** The wheel system added with {@link #addPart}, or null. */
     public RsWheelSystem wheelSystem;
@@ -36,16 +34,11 @@ public class RsBody extends RsComponent {
     public boolean collision;
 
     private final ArrayList<RsBodyPart> parts = new ArrayList<>();
-    private final int bodyID;
+    private int bodyID;
 
     /** An empty body; null is kept as the name and transmitted as "". */
     public RsBody(String name) {
         this.name = name;
-        bodyID = nextBodyID();
-    }
-
-    private static synchronized int nextBodyID() {
-        return ++lastBodyID;
     }
 
     /**
@@ -59,6 +52,7 @@ public class RsBody extends RsComponent {
             throw new IllegalArgumentException("part is null");
         }
         parts.add(part);
+        part.joined(this);
         if (part instanceof RsWheelSystem) {
             wheelSystem = (RsWheelSystem) part;
         }
@@ -130,7 +124,7 @@ public class RsBody extends RsComponent {
     }
 
     /** Every part, each actuator followed by its sub-parts. */
-    private List<RsBodyPart> allParts() {
+    List<RsBodyPart> allParts() {
         List<RsBodyPart> all = new ArrayList<>();
         for (RsBodyPart p : parts) {
             all.add(p);
@@ -275,7 +269,9 @@ public class RsBody extends RsComponent {
      * series), straightened wheels, no collision; sensor, contact and encoder states are kept.
      */
     public void place(double time, double x, double y, double orientation) {
+        RsMotion before = motion;
         motion = new RsMotionNull(time, x, y, orientation);
+        motion.startSeriesAfter(before);
         resetStateData();
         placement = true;
     }
@@ -433,9 +429,17 @@ public class RsBody extends RsComponent {
         refEnclosure = r.isPopulated() ? BodyOutline.edgesFromPoints(corners, 4) : new RsSegment[0];
     }
 
-    /** A process-wide serial number of the body (bodies are not identified on the wire). */
+    /**
+     * The body's number among the bodies its client has sent (1 for the first), the same on both ends
+     * of the session; 0 for a body not sent yet. Bodies are not identified on the wire.
+     */
     public int getID() {
         return bodyID;
+    }
+
+    /** Numbers the body as the {@code n}-th its client sent. */
+    void assignID(int n) {
+        bodyID = n;
     }
 
     /**

@@ -2,13 +2,19 @@ package rp1.rossum;
 
 import java.awt.Color;
 import java.awt.Graphics;
+import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * One component of a robot body: a shape, a sensor, a painter, a wheel system or its wheels, or
  * decorative art. Every part has a name, four colours (fill and line, plus the "hot" variants used
- * while a sensor detects something or a painter is active) and a part id. The id is taken in the
- * constructor from one process-wide counter that starts at 1, so ids follow construction order; they
- * identify sensors, painters, wheel systems and encoders on the wire (protocol.md section 8.6).
+ * while a sensor detects something or a painter is active) and a part id, which identifies sensors,
+ * painters, wheel systems and encoders on the wire (protocol.md section 8.6).
+ *
+ * <p>Ids belong to the body: a body numbers its parts 1, 2, ... in the order they were constructed,
+ * the first time one of their ids is needed (the body is sent, or {@link #getID()} is called), and
+ * they keep those ids from then on. A part in no body numbers itself and its sub-parts the same way.
+ * So a client's one body gets the ids RP1 0.60's process-wide counter gave it, and every body of a
+ * process, of a simulation or of several simulations in one process, is numbered alike.
  */
 public abstract class RsBodyPart extends RsComponent {
     private static final long serialVersionUID = 1L;
@@ -18,14 +24,11 @@ public abstract class RsBodyPart extends RsComponent {
     /** Orange, the default hot fill colour (and hot line colour of non-sensors). */
     static final Color DEFAULT_HOT_COLOR = new Color(255, 200, 0);
 
-    private static final Object COUNTER_LOCK = new Object();
-    private static int nextPartSerialNumber = 1;
     /**
-     * While a body specification is decoded, the ids to give the parts being built on this thread.
-     * Decoding must reproduce the sender's ids without rewinding the process-wide counter, which an
-     * in-process client sharing this JVM keeps using.
+     * Stamps parts in the order they are constructed. Only ever compared between parts of one body,
+     * so its value never reaches the wire and nothing needs to reset it.
      */
-    private static final ThreadLocal<int[]> DECODING_IDS = new ThreadLocal<>();
+    private static final AtomicLong CONSTRUCTED = new AtomicLong();
 
     protected String name = "Unnamed";
     protected RsRectangle refBounds = new RsRectangle();
@@ -36,48 +39,49 @@ public abstract class RsBodyPart extends RsComponent {
     protected Color hotFillColor = DEFAULT_HOT_COLOR;
     protected Color hotLineColor = DEFAULT_HOT_COLOR;
 
-    private final int partID;
+    private final long constructed = CONSTRUCTED.incrementAndGet();
+    private volatile int partID;
+    /** Whether {@link #partID} holds the part's id (any int may be an id on the wire, 0 included). */
+    private volatile boolean numbered;
+    /** The body or actuator this part was added to last, or null: whose numbering it takes part in. */
+    private RsComponent owner;
 
-    /** A part with the next id. */
+    /** A part, numbered with its body (see the class comment). */
     public RsBodyPart() {
-        partID = takeNextId();
-    }
-
-    private static int takeNextId() {
-        int[] decoding = DECODING_IDS.get();
-        if (decoding != null) {
-            return decoding[0]++;
-        }
-        synchronized (COUNTER_LOCK) {
-            return nextPartSerialNumber++;
-        }
-    }
-
-    /** Sets the id the next constructed part (on any thread) will get. */
-    protected static void setNextPartSerialNumber(int next) {
-        synchronized (COUNTER_LOCK) {
-            nextPartSerialNumber = next;
-        }
-    }
-
-    /** The id the next constructed part will get from the process-wide counter. */
-    static int peekNextPartSerialNumber() {
-        synchronized (COUNTER_LOCK) {
-            return nextPartSerialNumber;
-        }
     }
 
     /**
-     * Until {@link #endDecodingIds()}, parts constructed on this thread get {@code firstId},
-     * {@code firstId + 1}, ... instead of ids from the process-wide counter.
+     * RP1 0.60 set its process-wide part counter with this. Parts are numbered per body now, so there
+     * is no such counter and the call has no effect (docs/differences.md); to give a part a chosen id
+     * the library's decoder and tests use {@code assignID}.
      */
-    static void beginDecodingIds(int firstId) {
-        DECODING_IDS.set(new int[] {firstId});
+    protected static void setNextPartSerialNumber(int next) {
     }
 
-    /** Returns this thread to the process-wide counter. */
-    static void endDecodingIds() {
-        DECODING_IDS.remove();
+    /** Gives this part {@code id} for good (decoding reproduces the sender's ids this way). */
+    void assignID(int id) {
+        partID = id;
+        numbered = true;
+    }
+
+    /** Whether the part has its id yet. */
+    boolean isNumbered() {
+        return numbered;
+    }
+
+    /** Construction order: a part built earlier has a smaller value. */
+    long constructionOrder() {
+        return constructed;
+    }
+
+    /** Records that the part was added to {@code body} or to an actuator. */
+    void joined(RsComponent body) {
+        owner = body;
+    }
+
+    /** The body or actuator this part was added to last, or null. */
+    RsComponent owner() {
+        return owner;
     }
 
     /** The fill colour used while cold; null = not filled. */
@@ -184,8 +188,14 @@ public abstract class RsBodyPart extends RsComponent {
         return name;
     }
 
-    /** The part id (also the encoder id of a wheel). */
+    /**
+     * The part id (also the encoder id of a wheel). The first call on any part of a body numbers the
+     * whole body (see the class comment).
+     */
     public int getID() {
+        if (!numbered) {
+            PartNumbering.number(this);
+        }
         return partID;
     }
 

@@ -77,6 +77,8 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /** Written by the event loop without taking this object's monitor, which senders may hold. */
     private volatile double simTime;
     private int timeoutIndex;
+    /** Bodies sent so far; guarded by this client's monitor, as {@link #sendBodySpecification} is. */
+    private int bodiesSent;
     private int encoderRequestIndex;
 
     public RsClient() {
@@ -567,6 +569,9 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      */
     public synchronized void sendBodySpecification(RsBody body) {
         Objects.requireNonNull(body, "body");
+        if (body.getID() == 0) {
+            body.assignID(++bodiesSent);
+        }
         DirectLink l = link;
         // After the session has ended, the wire path drops the body with a log line, as it drops requests.
         if (l != null && !isClosed()) {

@@ -69,10 +69,13 @@ import rp1.rossum.request.RsTimeoutRequestHandler;
  */
 public class RsConnection extends RsProtocol implements Runnable {
     private static final byte[] NO_BYTES = new byte[0];
+    /** Bodies received in this session (handed over by one thread at a time: the decoder or the direct client). */
+    private int bodiesReceived;
     /**
      * Subscriptions as (event code, index) keys. RP1 0.60 kept a fixed table of indices 0..1000, so
-     * sensors whose part id exceeded 1000 could never subscribe; part ids come from one process-wide
-     * counter, and with many robots in one process they pass 1000 quickly, so any index is accepted.
+     * sensors whose part id exceeded 1000 could never subscribe (its process-wide part counter passed
+     * 1000 quickly with many robots in one process); a client may give a part any id, so any index is
+     * accepted.
      */
     private final Set<Long> subscriptions = new HashSet<>();
     /** Keeps interlock numbers in increasing order on this connection's stream. */
@@ -193,8 +196,12 @@ public class RsConnection extends RsProtocol implements Runnable {
         }
     }
 
-    /** A body specification for the body handler: decoded here, or a decoded copy from a direct link. */
+    /**
+     * A body specification for the body handler: decoded here, or a decoded copy from a direct link.
+     * It is numbered as the client numbered it: the n-th body of this session.
+     */
     void bodyReceived(RsBody body) {
+        body.assignID(++bodiesReceived);
         verbose("Received body specification with name " + body.getName());
         RsConnectionBodyHandler h = bodyHandler;
         if (h != null) {
@@ -342,7 +349,7 @@ public class RsConnection extends RsProtocol implements Runnable {
 
     /**
      * Beyond RP1 0.60: reads back a payload made by {@link #encodeBodySpecification}. Every part gets
-     * the id it had in the body that was encoded; this process's part counter is not touched.
+     * the id it had in the body that was encoded.
      *
      * @throws IOException naming the field if the bytes are malformed or cut short
      */

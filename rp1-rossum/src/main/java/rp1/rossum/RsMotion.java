@@ -8,11 +8,14 @@ package rp1.rossum;
  *
  * <p>Each motion has a continuity id; motions that continue one another (each built from the previous
  * one) share a continuity series id, and a new placement starts a new series, so a paint trail knows
- * when the robot jumped.
+ * when the robot jumped. The ids count along a robot's motions (the first motion is 1, each motion
+ * built from another or placed after it the next number; a series is named by its first motion), so
+ * they belong to the robot and come out the same in every simulation.
  */
 public abstract class RsMotion extends RsComponent {
     private static final long serialVersionUID = 1L;
 
+    /** Only for {@link #getNewContinuityID()}, which 0.60 programs may call; the library never does. */
     private static int lastContinuityID;
 
     /** Start time (simulation seconds). */
@@ -40,7 +43,7 @@ public abstract class RsMotion extends RsComponent {
     protected RsMotion() {
         transform0 = new RsTransform();
         transform = new RsTransform();
-        continuityID = getNewContinuityID();
+        continuityID = 1;
         continuitySeriesID = continuityID;
     }
 
@@ -60,8 +63,19 @@ public abstract class RsMotion extends RsComponent {
         time = time0;
         transform0 = previous == null ? new RsTransform() : previous.getStateAtTime(startTime);
         transform = new RsTransform(transform0);
-        continuityID = getNewContinuityID();
+        continuityID = previous == null ? 1 : previous.continuityID + 1;
         continuitySeriesID = previous == null ? continuityID : previous.continuitySeriesID;
+    }
+
+    /**
+     * Makes this motion, which starts a new series, the one after {@code before} in the robot's
+     * history (a placement after earlier motions), so that its series differs from every earlier one.
+     */
+    void startSeriesAfter(RsMotion before) {
+        if (before != null) {
+            continuityID = before.continuityID + 1;
+            continuitySeriesID = continuityID;
+        }
     }
 
     /**
@@ -188,7 +202,10 @@ public abstract class RsMotion extends RsComponent {
         }
     }
 
-    /** A new continuity id (process-wide counter). */
+    /**
+     * A new number from a process-wide counter, as in RP1 0.60. Kept so that 0.60 programs compile;
+     * motions no longer take their ids from it (see the class comment).
+     */
     public static synchronized int getNewContinuityID() {
         return ++lastContinuityID;
     }

@@ -28,7 +28,6 @@ class BodyCodecTest {
 
     @Test
     void theWorkedExampleOfSection13_3ComesOutByteForByte() {
-        RsBodyPart.setNextPartSerialNumber(1);
         RsBody body = new RsBody("B");
         RsBodyCircle c = new RsBodyCircle(0, 0, 0.15);
         c.setName("c");

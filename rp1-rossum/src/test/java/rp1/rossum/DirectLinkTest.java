@@ -149,7 +149,6 @@ class DirectLinkTest {
             ServerRecorder server = new ServerRecorder(link.connection);
             link.startServer();
             RsClient c = link.client;
-            RsBodyPart.setNextPartSerialNumber(1);
             RsBody body = new RsBody("b");
             body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
             RsBodyPainter painter = new RsBodyPainter(new double[] {0, 0, 0.05, 0, 0.05, 0.05}, 3);

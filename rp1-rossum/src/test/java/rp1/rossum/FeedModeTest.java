@@ -36,7 +36,6 @@ class FeedModeTest {
         byte[] accept = new WireOut().header(0, 0, 1, RsProtocol.ACCEPT).toByteArray();
         client.setInputOutputStreams(new ByteArrayInputStream(accept), sent);
         client.exchangeIntroductions();
-        RsBodyPart.setNextPartSerialNumber(1);
         RsBody body = new RsBody("fed");
         body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
         client.sendBodySpecification(body);
@@ -265,7 +264,6 @@ class FeedModeTest {
         byte[] accept = new WireOut().header(0, 0, 1, RsProtocol.ACCEPT).toByteArray();
         client.setInputOutputStreams(new ByteArrayInputStream(accept), sent);
         client.exchangeIntroductions();
-        RsBodyPart.setNextPartSerialNumber(1);
         RsBody body = new RsBody("big");
         for (int i = 0; i < 3000; i++) {
             body.addPart(new RsBodyCircle(i * 0.001, 0.0, 0.1));

@@ -1,5 +1,6 @@
 package rp1.rossum;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
@@ -173,6 +174,20 @@ class MotionTest {
         assertNotEquals(first.getContinuityID(), b.motion.getContinuityID());
         b.place(3.0, 0, 0, 0);
         assertNotEquals(first.getContinuitySeriesID(), b.motion.getContinuitySeriesID());
+    }
+
+    @Test
+    void motionIdsCountAlongTheRobotsMotionsSoEveryRunNumbersThemAlike() {
+        int[][] runs = new int[2][];
+        for (int run = 0; run < 2; run++) {
+            RsBody b = started(0, 0, 0, 1.0, 0.0, 10.0);
+            b.computeMotion(2.0, new RsMotionRequest(1.0, 1.0, 1.0));
+            int continued = b.motion.getContinuityID();
+            b.place(3.0, 0, 0, 0);
+            runs[run] = new int[] {continued, b.motion.getContinuityID(), b.motion.getContinuitySeriesID()};
+            RsMotion.getNewContinuityID();
+        }
+        assertArrayEquals(runs[0], runs[1]);
     }
 
     @Test

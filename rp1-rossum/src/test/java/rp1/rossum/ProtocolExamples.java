@@ -147,9 +147,8 @@ final class ProtocolExamples {
                 }));
     }
 
-    /** The body of the classic 114-byte example: one circle, the first part of the process. */
+    /** The body of the classic 114-byte example: one circle, the body's first part. */
     private static RsBody circleBody() {
-        RsBodyPart.setNextPartSerialNumber(1);
         RsBody body = new RsBody("B");
         RsBodyCircle c = new RsBodyCircle(0, 0, 0.15);
         c.setName("c");
@@ -160,7 +159,6 @@ final class ProtocolExamples {
     }
 
     private static RsDifferentialSteering steering() {
-        RsBodyPart.setNextPartSerialNumber(1);
         RsDifferentialSteering steering = new RsDifferentialSteering(0.4, 0.05);
         steering.addDefaultWheels(0.05, 0.02);
         steering.addEncodersToDefaultWheels(64);
@@ -174,8 +172,8 @@ final class ProtocolExamples {
     }
 
     private static RsBody rangeSensorBody() {
-        RsBodyPart.setNextPartSerialNumber(4);
         RsBodyRangeSensor sonar = new RsBodyRangeSensor(new double[] {0, -0.05, 0.1, 0, 0, 0.05}, 3, 0.1, 0, 0, 2.0, 8);
+        sonar.assignID(4);
         sonar.setName("sonar");
         RsBody body = new RsBody("R");
         body.addPart(sonar);
@@ -288,13 +286,14 @@ final class ProtocolExamples {
     }
 
     private static RsBodyTargetSensor targetSensor() {
-        RsBodyPart.setNextPartSerialNumber(5);
-        return new RsBodyTargetSensor(SQUARE, 4, 0.05, 0, 0, 0.5, 3.0, 4, 4);
+        RsBodyTargetSensor sensor = new RsBodyTargetSensor(SQUARE, 4, 0.05, 0, 0, 0.5, 3.0, 4, 4);
+        sensor.assignID(5);
+        return sensor;
     }
 
     private static RsBodyPainter painter() {
-        RsBodyPart.setNextPartSerialNumber(7);
         RsBodyPainter p = new RsBodyPainter(SQUARE, 4);
+        p.assignID(7);
         p.setTrailerPosition(-0.25, 0);
         p.setTrailerWidth(0.0625);
         p.setPaintColor(Color.red);

@@ -122,8 +122,8 @@ class SessionRoundTripTest {
 
     @Test
     void sensorsWithIdsAbove1000CanStillSubscribe() throws Exception {
-        RsBodyPart.setNextPartSerialNumber(5000);
         RsBodyRangeSensor sonar = new RsBodyRangeSensor(BOX, 4, 0.1, 0.0, 0.0, 3.0, 10);
+        sonar.assignID(5000);
         try (Link link = Link.piped(ClientEventLoopTest.quietClient(), new RsConnection())) {
             ServerRecorder server = new ServerRecorder(link.connection);
             link.startServer();
@@ -306,7 +306,6 @@ class SessionRoundTripTest {
 
     @Test
     void theBodyOfSection13_3Is114BytesAfterAHandshake() throws Exception {
-        RsBodyPart.setNextPartSerialNumber(1);
         RsBody body = new RsBody("B");
         RsBodyCircle c = new RsBodyCircle(0, 0, 0.15);
         c.setName("c");

@@ -5,6 +5,7 @@ import java.net.InetAddress;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
@@ -25,6 +26,13 @@ import rp1.simulator.net.Transport;
  * {@code setInputOutputStreams} (with {@code dlcSetIO}: in-process pipes, no handshake),
  * {@code setLogger} (with {@code dlcSetLog}: the server's log), then {@code initialize()} and
  * {@code run()} on a thread per client.
+ *
+ * <p>The clients are connected, and so numbered, in the order {@code dlcName} lists them, and started
+ * one at a time in that order: a client's {@code initialize()} begins only once the one before has
+ * returned from its own and the server has read what it sent meanwhile (or after
+ * {@code connectTimeout} seconds, with a log line). So bodies, part ids and first requests reach the
+ * simulation in the listed order whatever the threads do, and a run with several loaded robots is
+ * the same for the same seed.
  *
  * <p>An {@code RsClient} that keeps the library's event loop is instead connected directly
  * ({@code dlcDelivery=auto} or {@code direct}): the simulation calls its handlers on the thread that
@@ -50,6 +58,8 @@ final class ClientLauncher implements LoadedClient.Listener {
     private final ServerConfig config;
     private final ServerLog log;
     private final AtomicInteger running;
+    private final CountDownLatch allStarted = new CountDownLatch(1);
+    private volatile boolean allReady = true;
     private volatile Outcome outcome;
 
     private ClientLauncher(List<LoadedClient> clients, ServerConfig config, ServerLog log) {
@@ -87,7 +97,8 @@ final class ClientLauncher implements LoadedClient.Listener {
     }
 
     /**
-     * Connects every client to {@code simulation} and starts its thread.
+     * Connects every client to {@code simulation}, in order, then starts their threads one after the
+     * other on a thread of its own (see the class comment).
      *
      * @param port the port of the server's listener, for clients that connect over TCP (-1 if none)
      */
@@ -104,8 +115,30 @@ final class ClientLauncher implements LoadedClient.Listener {
                     c.client.setLogger(log);
                 }
             }
-            log.log("Launching thread for client: \"" + c.className + "\"");
-            c.start(log, this);
+        }
+        Thread starter = new Thread(this::startInOrder, "dlc start");
+        starter.setDaemon(true);
+        starter.start();
+    }
+
+    /** Starts each client once the one before is ready, each given at most {@code connectTimeout}. */
+    private void startInOrder() {
+        try {
+            for (LoadedClient c : clients) {
+                log.log("Launching thread for client: \"" + c.className + "\"");
+                c.start(log, this);
+                long deadline = System.nanoTime() + (long) (config.connectTimeout * TimeUnit.SECONDS.toNanos(1));
+                if (!c.awaitReady(deadline)) {
+                    log.log("client " + c.className + ": initialize() has not finished after " + config.connectTimeout
+                            + " s; going on without waiting for it");
+                    allReady = false;
+                }
+            }
+        } catch (InterruptedException e) {
+            allReady = false;
+            Thread.currentThread().interrupt();
+        } finally {
+            allStarted.countDown();
         }
     }
 
@@ -151,24 +184,16 @@ final class ClientLauncher implements LoadedClient.Listener {
     }
 
     /**
-     * Waits until every client's {@code initialize()} has returned and the server has dealt with the
-     * requests the in-process ones sent meanwhile, at most {@code timeoutSeconds}. A lockstep
-     * simulation starts its clock after this, so a run's first requests are all stamped at time 0
-     * whatever the threads did, and the same seed gives the same run.
+     * Waits until every client has been started in turn: its {@code initialize()} has returned and the
+     * server has dealt with the requests an in-process one sent meanwhile, or its {@code connectTimeout}
+     * has passed. A lockstep simulation starts its clock after this, so a run's first requests are all
+     * stamped at time 0, in the order of {@code dlcName}, and the same seed gives the same run.
      *
      * @return whether every client got that far in time
      */
-    boolean awaitReady(double timeoutSeconds) throws InterruptedException {
-        long deadline = System.nanoTime() + (long) (timeoutSeconds * TimeUnit.SECONDS.toNanos(1));
-        boolean all = true;
-        for (LoadedClient c : clients) {
-            if (!c.awaitReady(deadline)) {
-                log.log("client " + c.className + ": initialize() has not finished after " + timeoutSeconds
-                        + " s; starting the clock anyway");
-                all = false;
-            }
-        }
-        return all;
+    boolean awaitReady() throws InterruptedException {
+        allStarted.await();
+        return allReady;
     }
 
     @Override

@@ -123,7 +123,7 @@ public final class RunningServer {
 
     private void startClockWhenClientsReady() {
         try {
-            parts.launcher.awaitReady(parts.config.connectTimeout);
+            parts.launcher.awaitReady();
             parts.simulation.startClock();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

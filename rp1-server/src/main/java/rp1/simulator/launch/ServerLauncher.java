@@ -65,7 +65,7 @@ public final class ServerLauncher {
             records = keepRecords(config, workingDirectory, simulation, planText, seed, log);
             ClientLauncher launcher = ClientLauncher.create(config, log, loader);
             ClientRegistry registry = new ClientRegistry(log);
-            listener = listen(config, options, simulation, registry, log);
+            listener = listen(config, options, simulation, planText, registry, log);
             parts = new RunningServer.Parts(config, log, simulation, registry, listener, launcher, options.view, records);
         } catch (StartupException | RuntimeException e) {
             if (listener != null) {
@@ -125,14 +125,7 @@ public final class ServerLauncher {
     /** Parses the floor plan and creates the simulation, seeded (and the seed logged, to repeat the run). */
     private static Simulation simulate(ServerConfig config, ResourceLocator.Found text, long seed, ServerLog log)
             throws StartupException {
-        RsPlan plan;
-        try {
-            plan = RsPlanParser.parse(text.reader(), text.location);
-        } catch (RsParsingException e) {
-            throw new StartupException(e.getMessage());
-        } catch (IOException e) {
-            throw new StartupException("cannot read the floor plan " + config.floorPlanFileName + ": " + e.getMessage());
-        }
+        RsPlan plan = parse(config, text);
         log.log("randomSeed=" + seed + (config.randomSeed.isPresent() ? "" : "; set it to repeat this run"));
         Simulation simulation = new Simulation(plan, SimulationSettings.of(config, seed), log);
         log.setSimTime(simulation.getScheduler()::recordedTime);
@@ -142,6 +135,16 @@ public final class ServerLauncher {
             simulation.waitForRobots(config.waitForClients);
         }
         return simulation;
+    }
+
+    private static RsPlan parse(ServerConfig config, ResourceLocator.Found text) throws StartupException {
+        try {
+            return RsPlanParser.parse(text.reader(), text.location);
+        } catch (RsParsingException e) {
+            throw new StartupException(e.getMessage());
+        } catch (IOException e) {
+            throw new StartupException("cannot read the floor plan " + config.floorPlanFileName + ": " + e.getMessage());
+        }
     }
 
     /**
@@ -175,12 +178,13 @@ public final class ServerLauncher {
     }
 
     private static ClientListener listen(ServerConfig config, LaunchOptions options, Simulation simulation,
-                                         ClientRegistry registry, ServerLog log) throws StartupException {
+                                         ResourceLocator.Found planText, ClientRegistry registry, ServerLog log)
+            throws StartupException {
         if (!config.enableNetworkClients) {
             log.log("Network client connections disabled (in response to configuration option)");
             return null;
         }
-        WarmUp.once(simulation.getWorld().getPlan());
+        WarmUp.run(parse(config, planText));
         int port = options.port.orElse(config.port);
         try {
             ClientListener listener = ClientListener.bind(config.bindAddress, port, simulation, registry, log,

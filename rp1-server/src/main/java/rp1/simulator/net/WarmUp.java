@@ -18,29 +18,28 @@ import rp1.simulator.SimulationSettings;
  * Prepares the server for its first network client before its port opens: a few clients, written as
  * raw bytes, join a scratch simulation of the same floor plan over loopback (handshake, body,
  * placement, motion, departure), so that the classes they need are loaded and their code has run
- * before a real client waits on it. Once per process; the real simulation, its random source and the
- * part numbering of in-process clients are not touched.
+ * before a real client waits on it. Each server does it once, before its port opens. The scratch
+ * simulation gets a plan of its own: a {@code World} gives its plan the world's random source, so
+ * sharing the real plan would leave random target selection drawing from the scratch source instead
+ * of the seeded one, and the run would no longer be what its recording replays.
  */
 public final class WarmUp {
     private static final int CLIENTS = 300;
     private static final int TIMEOUT_MILLIS = 2000;
-    private static boolean done;
-
     private WarmUp() {
     }
 
-    /** Runs the warm-up, unless this process already did. Failures only mean a colder first client. */
-    public static synchronized void once(RsPlan plan) {
-        if (done) {
-            return;
-        }
-        done = true;
+    /**
+     * Runs the warm-up on {@code ownPlan}, which must not be the real simulation's plan (a copy of it
+     * will do). Failures only mean a colder first client.
+     */
+    public static void run(RsPlan ownPlan) {
         RsLogInterface quiet = new RsLogAdapter() {
             @Override
             public void logIt(String level, String message) {
             }
         };
-        Simulation scratch = new Simulation(plan, SimulationSettings.lockstep(0.05, 1L), quiet);
+        Simulation scratch = new Simulation(ownPlan, SimulationSettings.lockstep(0.05, 1L), quiet);
         ClientRegistry registry = new ClientRegistry(quiet);
         Thread loop = new Thread(scratch::run, "warm-up simulation");
         loop.setDaemon(true);

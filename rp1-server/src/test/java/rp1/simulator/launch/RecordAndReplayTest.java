@@ -20,6 +20,7 @@ import rp1.rossum.event.RsHeartbeatEvent;
 import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.event.RsMouseClickEvent;
 import rp1.rossum.event.RsPlacementEvent;
+import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.request.RsMotionRequest;
 
 /**
@@ -76,6 +77,38 @@ class RecordAndReplayTest {
         String events = text("run.events");
         assertTrue(events.contains(" MouseClick button=1 clickCount=2 x=5.0 y=6.0"), "the click was replayed");
         assertTrue(events.contains(" Heartbeat sequence=14"), "heartbeats were replayed");
+    }
+
+    /**
+     * The start-up warm-up (network clients enabled) must leave the real plan alone: random target
+     * selection then draws from the seeded source, which the replay, having no warm-up, uses too.
+     */
+    @Test
+    void randomTargetSelectionAfterTheWarmUpReplaysToTheSameEvents() throws Exception {
+        StringBuilder plan = new StringBuilder("wall s { geometry: 0, 0, 10, 0, 0.05; }\n"
+                + "wall n { geometry: 10, 10, 0, 10, 0.05; }\n"
+                + "placement p1 { geometry: 2, 2, 0, 0.2; }\n");
+        for (int i = 1; i <= 12; i++) {
+            plan.append("target t").append(i).append(" { geometry: ").append(i * 0.7).append(", 8, 0.1; }\n");
+        }
+        Files.write(dir.resolve("targets.txt"), plan.toString().getBytes(StandardCharsets.UTF_8));
+        RunningServer server = TestServer.start(dir, with("floorPlanFileName=targets.txt", "simulationSpeed=max",
+                "interlockEnabled=true", "randomSeed=5"));
+        TcpRobot robot = TcpRobot.connect(server.getPort(), "picker");
+        robot.addTargetSelectionEventHandler(e -> { });
+        robot.startLoop();
+        robot.sendPlacementRequest("p1");
+        robot.await(RsPlacementEvent.class, e -> e.valid);
+        for (int i = 0; i < 8; i++) {
+            robot.sendExclusiveRandomTargetSelectionRequest();
+        }
+        robot.sendTimeoutRequest(0.1);
+        robot.await(RsTimeoutEvent.class, e -> true);
+        server.stop();
+        robot.leave();
+
+        assertReplayIsTheRun();
+        assertTrue(text("run.events").contains(" TargetSelection "), "the log shows the selections");
     }
 
     /** The server's lines plus the recording keys (the picture in the temporary directory). */

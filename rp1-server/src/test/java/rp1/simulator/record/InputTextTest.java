@@ -74,7 +74,7 @@ class InputTextTest {
         drive.addDefaultWheels(0.075, 0.03);
         body.addPart(drive);
         String text = written(new Request.Body(body));
-        // A part made in between moves this process's part counter on; the ids must not follow it.
+        // A part made in between must not change the ids read back.
         new RsBodyCircle(0.0, 0.0, 0.1);
         RsBody back = ((Request.Body) readBack(text)).body();
         assertEquals("wheeled", back.getName());

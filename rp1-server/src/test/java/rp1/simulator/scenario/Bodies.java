@@ -16,23 +16,6 @@ final class Bodies {
     private Bodies() {
     }
 
-    /**
-     * Restarts the process-wide part numbering at 1, as in a fresh JVM, so that two runs in one test
-     * give their sensors the same ids.
-     */
-    static void restartPartIds() {
-        PartIds.restart();
-    }
-
-    /** Reaches the protected part-id counter of the body model. */
-    private static final class PartIds extends rp1.rossum.RsBodyShape {
-        private static final long serialVersionUID = 1L;
-
-        static void restart() {
-            setNextPartSerialNumber(1);
-        }
-    }
-
     /** A 0.3 m round robot with a differential drive (axle at the centre). */
     static RsBody round(String name) {
         RsBody body = new RsBody(name);

@@ -30,7 +30,6 @@ class DeterminismTest {
      * could not move at all, a step back) at every halt until t = 20 s.
      */
     private static String wander(Scenario s) throws InterruptedException {
-        Bodies.restartPartIds();
         RsBody body = Bodies.withSonar("wanderer");
         ScenarioClient c = s.connect(new ScenarioClient(body));
         int[] turn = {0};
@@ -84,8 +83,7 @@ class DeterminismTest {
     /** Two seconds of a robot approaching a wall with a heartbeat, interlock on, at {@code speed}. */
     private static String pacedRun(double speed) throws InterruptedException {
         try (Scenario s = Scenario.with(Plans.HALL_WITH_THIN_WALL, SimulationSettings.paced(0.05, speed, true, 7L))) {
-            Bodies.restartPartIds();
-            ScenarioClient c = s.connect(new ScenarioClient(Bodies.withSonar("bot")));
+                ScenarioClient c = s.connect(new ScenarioClient(Bodies.withSonar("bot")));
             c.once(RsPlacementEvent.class, e -> {
                 c.sendHeartbeatRequest(0.25);
                 c.sendMotionRequest(new RsMotionRequest(1.8, 0.0, 2.0));

@@ -22,7 +22,7 @@ import rp1.simulator.SimulationSettings;
  * {@code RsConnection} over in-memory pipes, or (with the system property
  * {@code rp1.scenario.delivery=direct}) linked directly, their handlers called by the simulation. By
  * default it runs in lockstep with the interlock, so every run of the same scenario produces the same
- * events, whichever way they are delivered; part ids start from 1 in every scenario.
+ * events, whichever way they are delivered; every body numbers its parts from 1 (RsBodyPart).
  */
 public final class Scenario implements AutoCloseable {
     /** The system property choosing how clients are connected: "pipes" (the default) or "direct". */
@@ -38,7 +38,6 @@ public final class Scenario implements AutoCloseable {
     private boolean started;
 
     private Scenario(RsPlan plan, SimulationSettings settings) {
-        Bodies.restartPartIds();
         simulation = new Simulation(plan, settings, QUIET);
         schedulerThread = new Thread(simulation::runPaused, "scenario-scheduler");
         schedulerThread.setDaemon(true);
