@@ -45,7 +45,15 @@ public final class Sweep {
     public static void main(String[] args) {
         Interruption interruption = new Interruption();
         Runtime.getRuntime().addShutdownHook(new Thread(interruption::signalled, "stop the runs"));
-        interruption.exit(run(args, System.out, System.err, System.console() != null, interruption));
+        int status = 1;
+        try {
+            status = run(args, System.out, System.err, System.console() != null, interruption);
+        } catch (RuntimeException e) {
+            // A defect, not a signal: leave at once rather than let the hook wait for a sweep that is gone.
+            System.err.println("rp1.Sweep: internal error: " + e);
+        } finally {
+            interruption.exit(status);
+        }
     }
 
     /** {@link #run(String[], PrintStream, PrintStream, boolean, Interruption)}, never interrupted. */
