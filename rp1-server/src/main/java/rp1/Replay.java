@@ -2,6 +2,7 @@ package rp1;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.Locale;
@@ -20,12 +21,15 @@ import rp1.view.Renderer;
  * Replays a recorded run without its clients (docs/recording.md):
  * {@code java rp1.Replay FILE [--events OUT] [--snapshot OUT.png] [--until T]}. The event log it
  * writes is the one the run wrote, byte for byte, and the picture the one the run left. Exit status 0
- * when replayed, 1 when the recording cannot be replayed (the message says why), 3 when the replay
- * reached the end of the run but sent other events than the run did.
+ * when replayed, 1 when the recording cannot be replayed or what the replay writes cannot be written
+ * (the message says why), 3 when the replay reached the end of the run but sent other events than the
+ * run did, 4 when the recording is partial (the run was killed) and was replayed as far as it goes.
  */
 public final class Replay {
     /** Exit status when the replay's events differ from the run's. */
     public static final int DIFFERS = 3;
+    /** Exit status when the recording has no end (the run did not stop cleanly) and was replayed as far as it goes. */
+    public static final int PARTIAL = 4;
 
     static final String USAGE = String.join("\n",
             "usage: java rp1.Replay RECORDING [--events OUT] [--snapshot OUT.png] [--until T]",
@@ -57,9 +61,17 @@ public final class Replay {
             return 0;
         }
         try {
-            Recording recording = RecordingReader.read(o.recording);
+            Recording recording = RecordingReader.read(existing(o.recording));
+            if (recording.tornLine() > 0) {
+                err.println("rp1.Replay: " + o.recording + ":" + recording.tornLine() + ": the last line was cut off"
+                        + " while it was being written (the run was killed); it is left out");
+            }
             Replayer replayer = Replayer.prepare(recording, o.events, log(err));
             Replayer.Outcome outcome = replayer.run(o.until);
+            if (replayer.eventLogFailure() != null) {
+                err.println("rp1.Replay: " + replayer.eventLogFailure());
+                return 1;
+            }
             if (o.snapshot != null) {
                 Renderer renderer = new Renderer(replayer.simulation().getWorld().getPlan());
                 WorldSnapshot snapshot = WorldSnapshot.of(replayer.simulation().getWorld(), outcome.time());
@@ -70,6 +82,19 @@ public final class Replay {
             err.println("rp1.Replay: " + e.getMessage());
             return 1;
         }
+    }
+
+    /**
+     * The recording, which must exist; the {@code .part} a killed run leaves beside a missing one is
+     * named, so the user knows where its remains are.
+     */
+    private static Path existing(Path recording) throws RecordingException {
+        Path part = recording.resolveSibling(recording.getFileName() + ".part");
+        if (Files.notExists(recording) && Files.exists(part)) {
+            throw new RecordingException(recording + " does not exist, but " + part + " does: the run did not stop"
+                    + " cleanly; replay what it left with: rp1.Replay " + part);
+        }
+        return recording;
     }
 
     private static int report(Recording recording, Replayer.Outcome outcome, Options o, PrintStream out, PrintStream err) {
@@ -84,12 +109,12 @@ public final class Replay {
                     + " (" + figures + ")");
             return DIFFERS;
         }
-        if (recording.end() == null) {
-            out.println("Replayed " + o.recording + " as far as it goes (it has no end: the run did not stop cleanly): "
-                    + figures);
-        } else {
-            out.println("Replayed " + o.recording + " up to " + o.until + " s: " + figures);
+        if (outcome.partial()) {
+            err.println("rp1.Replay: partial recording: " + o.recording + " ends at t=" + outcome.time() + " s (it has"
+                    + " no end line: the run did not stop cleanly); replayed as far as it goes: " + figures);
+            return PARTIAL;
         }
+        out.println("Replayed " + o.recording + " up to " + o.until + " s: " + figures);
         return 0;
     }
 

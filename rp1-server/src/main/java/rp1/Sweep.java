@@ -12,6 +12,7 @@ import java.util.Map;
 
 import rp1.rossum.RsPlan;
 import rp1.simulator.batch.Batch;
+import rp1.simulator.batch.Interruption;
 import rp1.simulator.batch.Progress;
 import rp1.simulator.batch.RobotResult;
 import rp1.simulator.batch.SweepException;
@@ -21,12 +22,14 @@ import rp1.view.SweepPicture;
 
 /**
  * Runs a robot over many seeds and floor plans (docs/guide.md, "Running many"):
- * {@code java rp1.Sweep -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N] [--timeout S] --out DIR}.
- * Every (seed, plan) is a headless world in a process of its own; DIR gets {@code results.csv}, one
- * row per run and robot, {@code summary.png}, every run's trails over its plan, and
- * {@code runs/SEED-PLAN/} with each run's recording, event log and end picture. Exit status 0 when
- * every run ended with status 0, 2 when one did not (its row says why), 1 when the sweep could not
- * start.
+ * {@code java rp1.Sweep -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N] [--timeout S] --out DIR
+ * [--resume]}. Every (seed, plan) is a headless world in a process of its own; DIR gets {@code results.csv},
+ * one row per run and robot (added as each run ends), {@code summary.png}, every run's trails over
+ * its plan, {@code runs/SEED-PLAN/} with each run's recording, event log and end picture, and
+ * {@code sweep.ini}, what the sweep was, for {@code --resume}. Exit status 0 when every run ended with
+ * status 0, 2 when one did not (its row says why), 1 when the sweep could not start, 130 when it was
+ * interrupted (Ctrl-C, SIGTERM): the runs going were stopped cleanly, those finished are in the
+ * results, and the message says how to go on.
  */
 public final class Sweep {
     /** Exit status when some run failed. */
@@ -35,20 +38,37 @@ public final class Sweep {
     private Sweep() {
     }
 
-    /** Runs the sweep; the process exits with its status. Runs still going when it is stopped are stopped too. */
+    /**
+     * Runs the sweep; the process exits with its status. Ctrl-C or SIGTERM stops the runs going
+     * cleanly and keeps the finished ones ({@link Interruption}).
+     */
     public static void main(String[] args) {
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> ProcessHandle.current().children()
-                .forEach(ProcessHandle::destroyForcibly), "stop the runs"));
-        System.exit(run(args, System.out, System.err, System.console() != null));
+        Interruption interruption = new Interruption();
+        Runtime.getRuntime().addShutdownHook(new Thread(interruption::signalled, "stop the runs"));
+        int status = 1;
+        try {
+            status = run(args, System.out, System.err, System.console() != null, interruption);
+        } catch (RuntimeException e) {
+            // A defect, not a signal: leave at once rather than let the hook wait for a sweep that is gone.
+            System.err.println("rp1.Sweep: internal error: " + e);
+        } finally {
+            interruption.exit(status);
+        }
+    }
+
+    /** {@link #run(String[], PrintStream, PrintStream, boolean, Interruption)}, never interrupted. */
+    public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal) {
+        return run(args, out, err, terminal, new Interruption());
     }
 
     /**
      * Runs the sweep the command line asks for.
      *
-     * @param terminal whether {@code out} is a terminal: a progress bar, else a line per run
+     * @param terminal     whether {@code out} is a terminal: a progress bar, else a line per run
+     * @param interruption stops the sweep when asked to
      * @return the exit status
      */
-    public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal) {
+    public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption) {
         SweepOptions options;
         try {
             options = SweepOptions.parse(args);
@@ -62,13 +82,25 @@ public final class Sweep {
         }
         try {
             Batch batch = Batch.prepare(options, Paths.get("").toAbsolutePath(), Sweep.class.getClassLoader());
+            interruption.onStop(batch::stop);
+            int toRun = batch.runs().size() - batch.kept().size();
             out.println("rp1.Sweep: " + batch.runs().size() + " runs (" + options.seeds.size() + " seeds on "
                     + batch.plans().size() + " plan" + (batch.plans().size() == 1 ? "" : "s") + "), " + options.jobs
-                    + " at a time, into " + batch.out());
-            List<Batch.Outcome> outcomes = batch.run(new Progress(batch.runs().size(), out, terminal));
+                    + " at a time, into " + batch.out()
+                    + (options.resume ? "; " + batch.kept().size() + " finished before, " + toRun + " to run" : ""));
+            Batch.Result result = batch.run(new Progress(toRun, out, terminal));
+            List<Batch.Outcome> outcomes = result.outcomes();
             Path summary = batch.out().resolve("summary.png");
             SweepPicture.write(summary, panels(batch.plans(), outcomes, options.seeds), keys(options.seeds));
             long failed = outcomes.stream().filter(o -> !o.report().succeeded()).count();
+            if (result.interrupted()) {
+                int missing = batch.runs().size() - outcomes.size();
+                err.println("rp1.Sweep: interrupted; " + outcomes.size() + " of " + batch.runs().size() + " runs finished"
+                        + " (" + failed + " failed), in " + batch.out().resolve("results.csv") + " and " + summary
+                        + ". To run the other " + missing + ", add --resume to the same command:\n  rp1.Sweep "
+                        + resumeArguments(args));
+                return Interruption.STATUS;
+            }
             out.println("rp1.Sweep: " + (outcomes.size() - failed) + " runs ended as asked, " + failed + " failed; "
                     + batch.out().resolve("results.csv") + ", " + summary);
             return failed == 0 ? 0 : RUN_FAILED;
@@ -80,6 +112,18 @@ public final class Sweep {
             err.println("rp1.Sweep: interrupted");
             return 1;
         }
+    }
+
+    /** The command line given, with --resume, each argument quoted for a shell if need be. */
+    private static String resumeArguments(String[] args) {
+        List<String> words = new ArrayList<>();
+        for (String a : args) {
+            words.add(a.matches("[A-Za-z0-9_./:,=+-]+") ? a : "'" + a.replace("'", "'\\''") + "'");
+        }
+        if (!words.contains("--resume")) {
+            words.add("--resume");
+        }
+        return String.join(" ", words);
     }
 
     /** One panel per plan, with the trails of its runs in the colour of their seed. */

@@ -53,7 +53,8 @@ public final class Pictures {
 
     /**
      * Writes {@code image} as a PNG file, replacing it whole: readers (a CI job, an image viewer)
-     * never see a half-written picture.
+     * never see a half-written picture. It is written as {@code NAME.part} and renamed; if it cannot
+     * be written (a full disk) the {@code .part} is removed and the error thrown.
      */
     public static void writePng(BufferedImage image, Path file) throws IOException {
         Path absolute = file.toAbsolutePath();
@@ -62,9 +63,18 @@ public final class Pictures {
             Files.createDirectories(dir);
         }
         Path partial = absolute.resolveSibling(absolute.getFileName() + ".part");
-        if (!ImageIO.write(image, "png", partial.toFile())) {
-            throw new IOException("no PNG writer available");
+        try {
+            if (!ImageIO.write(image, "png", partial.toFile())) {
+                throw new IOException("no PNG writer available");
+            }
+            Files.move(partial, absolute, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } catch (IOException | RuntimeException e) {
+            try {
+                Files.deleteIfExists(partial);
+            } catch (IOException cleanup) {
+                e.addSuppressed(cleanup);
+            }
+            throw e;
         }
-        Files.move(partial, absolute, StandardCopyOption.REPLACE_EXISTING);
     }
 }

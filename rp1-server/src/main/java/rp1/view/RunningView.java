@@ -1,5 +1,7 @@
 package rp1.view;
 
+import java.io.IOException;
+
 import javax.swing.SwingUtilities;
 
 /**
@@ -34,9 +36,11 @@ public final class RunningView implements AutoCloseable {
      * Closes the window (without waiting for the event thread, which may be the caller's caller) and
      * writes the picture at exit, waiting until the picture files are written. Call after the
      * simulation has stopped, so the last picture shows where everything ended.
+     *
+     * @throws IOException if a picture could not be written
      */
     @Override
-    public void close() {
+    public void close() throws IOException {
         if (window != null) {
             SwingUtilities.invokeLater(window::close);
         }

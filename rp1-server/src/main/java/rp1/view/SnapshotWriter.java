@@ -25,6 +25,10 @@ import rp1.simulator.world.World;
  * the world has changed, so a world at rest is not kept busy. Drawing and encoding happen on a writer
  * thread; should it fall behind by more than a few pictures, the thread running tasks draws the next
  * one itself, which can slow a paced simulation but never change it.
+ *
+ * <p>A picture that cannot be written (a full disk) is an important line in the log and leaves no
+ * file behind ({@link Pictures#writePng}); {@link #close()} then throws, so the server's exit status
+ * says that its output is not whole.
  */
 public final class SnapshotWriter implements AutoCloseable {
     private static final int QUEUED_PICTURES = 4;
@@ -39,6 +43,7 @@ public final class SnapshotWriter implements AutoCloseable {
     private final ThreadPoolExecutor writer;
     private final AutoCloseable observation;
     private boolean closed;
+    private volatile String failure;
 
     /**
      * @param simulation the simulation to picture
@@ -89,16 +94,22 @@ public final class SnapshotWriter implements AutoCloseable {
         try {
             Pictures.writePng(Pictures.render(renderer, snapshot), target);
         } catch (IOException | RuntimeException e) {
-            log.log("Could not write the picture " + target + ": " + e);
+            String why = "cannot write the picture " + target + ": " + e.getMessage();
+            if (failure == null) {
+                failure = why;
+            }
+            log.logIt("X", why);
         }
     }
 
     /**
      * Writes the picture at exit and waits (up to a minute) until every picture is on disk. Call
      * once the scheduler has stopped; the world is then read from the calling thread.
+     *
+     * @throws IOException naming the first picture that could not be written (the others were)
      */
     @Override
-    public void close() {
+    public void close() throws IOException {
         synchronized (this) {
             if (closed) {
                 return;
@@ -114,10 +125,13 @@ public final class SnapshotWriter implements AutoCloseable {
         writer.shutdown();
         try {
             if (!writer.awaitTermination(CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {
-                log.log("Pictures still being written after " + CLOSE_WAIT_SECONDS + " s; giving up on them");
+                failure = "pictures still being written after " + CLOSE_WAIT_SECONDS + " s; given up";
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+        if (failure != null) {
+            throw new IOException(failure);
         }
     }
 }

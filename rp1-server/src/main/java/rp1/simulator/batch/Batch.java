@@ -13,6 +13,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Properties;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -34,6 +35,11 @@ import rp1.simulator.launch.JavaCommand;
  * {@code results.csv}. A run is a function of its properties, plan and seed and nothing else: it gets
  * them in its own {@code run.ini} and shares no state with the others, so the same runs could be
  * spread over several machines. A run that fails is a row with its reason; the others go on.
+ *
+ * <p>A run's rows are in {@code results.csv} as soon as it ends. {@link #stop()} (the sweep was
+ * interrupted) asks the runs still going to stop as Ctrl-C would, so their recordings are closed,
+ * starts no others, and leaves {@code results.csv} with every run that finished; {@code --resume}
+ * then runs only the others, if the folder's {@code sweep.ini} says it holds the same sweep.
  */
 public final class Batch {
     /** Each run's recording, event log and end picture, in its folder (docs/guide.md names them). */
@@ -44,12 +50,19 @@ public final class Batch {
     private static final String OUTPUT = "output.txt";
     /** How long a run that is asked to stop may take to close its files before it is killed. */
     private static final long STOP_GRACE_SECONDS = 10;
+    /** The results in the output folder. */
+    private static final String RESULTS = "results.csv";
 
     private final SweepOptions options;
     private final Path out;
     private final String propertiesText;
     private final Map<String, RsPlan> plans;
     private final List<Run> runs;
+    private final SweepSpec spec;
+    /** The runs finished by an earlier sweep into the same folder (--resume). */
+    private final List<Outcome> kept;
+    private final Set<Process> running = ConcurrentHashMap.newKeySet();
+    private volatile boolean stopping;
 
     /** One (seed, plan) of the sweep and the folder it runs in. */
     public record Run(long seed, String plan, Path dir) {
@@ -59,17 +72,28 @@ public final class Batch {
     public record Outcome(Run run, RunReport report, double wallSeconds, List<Trail> trails) {
     }
 
-    private Batch(SweepOptions options, Path out, String propertiesText, Map<String, RsPlan> plans, List<Run> runs) {
+    /**
+     * How the sweep went: the outcome of every finished run (now or, with --resume, before), in the
+     * order of {@link #runs()}, and whether it was stopped before every run had finished.
+     */
+    public record Result(List<Outcome> outcomes, boolean interrupted) {
+    }
+
+    private Batch(SweepOptions options, Path out, String propertiesText, Map<String, RsPlan> plans, List<Run> runs,
+                  SweepSpec spec, List<Outcome> kept) {
         this.options = options;
         this.out = out;
         this.propertiesText = propertiesText;
         this.plans = plans;
         this.runs = runs;
+        this.spec = spec;
+        this.kept = kept;
     }
 
     /**
      * Checks everything that can be checked before a run starts: the properties (valid, loading a
-     * client, bounding every run), the plans (found and parsed), the output folder.
+     * client, bounding every run), the plans (found and parsed), the output folder, and with
+     * {@code --resume} that the folder holds the same sweep (whose finished runs are then kept).
      *
      * @param workingDirectory where the properties and plans are looked for first, as the server does
      * @throws SweepException saying what is wrong
@@ -84,15 +108,21 @@ public final class Batch {
             checkRunnable(config, found.location);
             List<String> names = options.plans.isEmpty() ? List.of(config.floorPlanFileName) : options.plans;
             Map<String, RsPlan> plans = new LinkedHashMap<>();
+            Map<String, String> planTexts = new LinkedHashMap<>();
             for (String name : names) {
-                plans.put(name, plan(locator, name));
+                ResourceLocator.Found text = locator.plan(name);
+                planTexts.put(name, text.text);
+                plans.put(name, plan(text));
             }
             Path out = options.out.toAbsolutePath();
             if (out.toString().matches(".*\\s.*")) {
                 throw new SweepException("--out " + out + ": the path must not contain white space (a property"
                         + " value ends at the first space, and each run's files are named in its properties)");
             }
-            return new Batch(options, out, found.text, plans, runs(options.seeds, plans.keySet(), out.resolve("runs")));
+            SweepSpec spec = SweepSpec.of(found.text, planTexts, options.seeds, options.timeoutSeconds);
+            List<Run> runs = runs(options.seeds, plans.keySet(), out.resolve("runs"));
+            List<Outcome> kept = options.resume ? kept(out, spec, runs) : List.of();
+            return new Batch(options, out, found.text, plans, runs, spec, kept);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());
         }
@@ -110,13 +140,40 @@ public final class Batch {
         }
     }
 
-    private static RsPlan plan(ResourceLocator locator, String name) throws ConfigException, SweepException {
-        ResourceLocator.Found text = locator.plan(name);
+    private static RsPlan plan(ResourceLocator.Found text) throws SweepException {
         try {
             return RsPlanParser.parse(text.text, text.location);
         } catch (RsParsingException e) {
             throw new SweepException(e.getMessage());
         }
+    }
+
+    /**
+     * The runs an earlier sweep into {@code out} finished, if it was the same sweep; refused with what
+     * differs if it was another.
+     */
+    private static List<Outcome> kept(Path out, SweepSpec spec, List<Run> runs) throws SweepException {
+        List<String> differences = SweepSpec.read(out).differences(spec);
+        if (!differences.isEmpty()) {
+            throw new SweepException("--resume: " + out + " holds another sweep (" + SweepSpec.FILE + "): "
+                    + String.join("; ", differences) + ". Resume it with its own options, or give another --out");
+        }
+        List<ResultsCsv.Kept> rows;
+        try {
+            rows = ResultsCsv.read(out.resolve(RESULTS));
+        } catch (IOException e) {
+            throw new SweepException("--resume: " + e.getMessage());
+        }
+        List<Outcome> kept = new ArrayList<>();
+        for (Run run : runs) {
+            for (ResultsCsv.Kept k : rows) {
+                if (k.seed() == run.seed() && k.plan().equals(run.plan())) {
+                    kept.add(new Outcome(run, k.report(), k.wallSeconds(), trails(run)));
+                    break;
+                }
+            }
+        }
+        return kept;
     }
 
     /** Plan by plan, seed by seed, each in {@code runs/SEED-PLAN} (the plan's file name without .txt). */
@@ -159,26 +216,41 @@ public final class Batch {
         return plans;
     }
 
+    /** The runs an earlier sweep into the same folder finished (--resume); they are not run again. */
+    public List<Outcome> kept() {
+        return kept;
+    }
+
     /**
-     * Runs every run, {@code --jobs} at a time, then writes {@code results.csv}.
-     *
-     * @return the outcomes, in the order of {@link #runs()}
+     * Runs every run not {@link #kept()}, {@code --jobs} at a time, adding each one's rows to
+     * {@code results.csv} as it ends; at the end rewrites {@code results.csv} in the order of the
+     * runs. Stops early, with every run that finished, if {@link #stop()} is called.
      */
-    public List<Outcome> run(Progress progress) throws IOException, InterruptedException {
+    public Result run(Progress progress) throws IOException, InterruptedException {
         Files.createDirectories(out.resolve("runs"));
+        if (!options.resume) {
+            spec.write(out);
+        }
+        Map<Run, Outcome> finished = new ConcurrentHashMap<>();
+        kept.forEach(o -> finished.put(o.run(), o));
         ExecutorService pool = Executors.newFixedThreadPool(options.jobs);
-        List<Future<Outcome>> futures = new ArrayList<>();
-        List<Outcome> outcomes = new ArrayList<>();
-        try {
+        try (ResultsCsv results = ResultsCsv.start(out.resolve(RESULTS), kept)) {
+            List<Future<?>> futures = new ArrayList<>();
             for (Run r : runs) {
-                futures.add(pool.submit(() -> {
-                    Outcome o = execute(r);
-                    progress.finished(o);
-                    return o;
-                }));
+                if (!finished.containsKey(r)) {
+                    futures.add(pool.submit(() -> {
+                        Outcome o = stopping ? null : execute(r);
+                        if (o != null) {
+                            results.add(o);
+                            finished.put(r, o);
+                            progress.finished(o);
+                        }
+                        return null;
+                    }));
+                }
             }
-            for (Future<Outcome> f : futures) {
-                outcomes.add(f.get());
+            for (Future<?> f : futures) {
+                f.get();
             }
         } catch (ExecutionException e) {
             throw new IOException("a run could not be carried out: " + e.getCause(), e.getCause());
@@ -186,13 +258,41 @@ public final class Batch {
             pool.shutdownNow();
             progress.close();
         }
-        ResultsCsv.write(out.resolve("results.csv"), outcomes);
-        return outcomes;
+        List<Outcome> outcomes = new ArrayList<>();
+        for (Run r : runs) {
+            if (finished.containsKey(r)) {
+                outcomes.add(finished.get(r));
+            }
+        }
+        ResultsCsv.write(out.resolve(RESULTS), outcomes);
+        return new Result(outcomes, outcomes.size() < runs.size());
+    }
+
+    /**
+     * Stops the sweep (it was interrupted): starts no more runs, and stops those going as Ctrl-C
+     * would (SIGTERM), so they close their recordings; a run still going after a grace period is
+     * killed. The runs stopped are not finished: they have no rows, and --resume runs them again.
+     * Any thread; returns at once.
+     */
+    public void stop() {
+        stopping = true;
+        running.forEach(Process::destroy);
+        Thread killer = new Thread(() -> {
+            try {
+                Thread.sleep(TimeUnit.SECONDS.toMillis(STOP_GRACE_SECONDS));
+            } catch (InterruptedException e) {
+                return;
+            }
+            running.forEach(Process::destroyForcibly);
+        }, "rp1-sweep-stop");
+        killer.setDaemon(true);
+        killer.start();
     }
 
     /**
      * One run in a process of its own, stopped if it takes longer than the timeout. A run that cannot
-     * even be started (its folder cannot be written, no process) is a row with the reason too.
+     * even be started (its folder cannot be written, no process) is a row with the reason too. Null
+     * if the sweep was stopped before the run finished.
      */
     private Outcome execute(Run run) throws InterruptedException {
         long start = System.nanoTime();
@@ -201,6 +301,9 @@ public final class Batch {
             report = runProcess(run);
         } catch (IOException e) {
             report = RunReport.failed("the run could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED);
+        }
+        if (report == null) {
+            return null;
         }
         double wall = (System.nanoTime() - start) * 1e-9;
         return new Outcome(run, report, wall, trails(run));
@@ -214,19 +317,26 @@ public final class Batch {
         Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(),
                 run.dir().toAbsolutePath().toString())).redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
+        running.add(p);
+        if (stopping) {
+            p.destroy();
+        }
         boolean ended;
         try {
             ended = p.waitFor((long) (options.timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
         } catch (InterruptedException e) {
             stop(p);
             throw e;
+        } finally {
+            running.remove(p);
         }
         if (!ended) {
             stop(p);
             return RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
                     options.timeoutSeconds), p.exitValue());
         }
-        return report(run, p.exitValue());
+        RunReport report = report(run, p.exitValue());
+        return stopping && (report.endReason().equals("stopped") || Double.isNaN(report.endTime())) ? null : report;
     }
 
     /**
@@ -234,6 +344,9 @@ public final class Batch {
      * replaying are often these); forcibly if it has not stopped within a grace period.
      */
     private static void stop(Process p) throws InterruptedException {
+        if (!p.isAlive()) {
+            return;
+        }
         p.destroy();
         if (!p.waitFor(STOP_GRACE_SECONDS, TimeUnit.SECONDS)) {
             p.destroyForcibly();

@@ -10,7 +10,7 @@ import java.util.Set;
 
 /**
  * A sweep's command line: {@code -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N]
- * [--timeout S] --out DIR}. Immutable.
+ * [--timeout S] --out DIR [--resume]}. Immutable.
  */
 public final class SweepOptions {
     /** The most runs one sweep may have. */
@@ -21,6 +21,7 @@ public final class SweepOptions {
     /** What the command line may hold. */
     public static final String USAGE = String.join("\n",
             "usage: java rp1.Sweep -p PROPERTIES --seeds SEEDS --out DIR [--plans A.txt,B.txt] [--jobs N] [--timeout S]",
+            "                      [--resume]",
             "  -p PROPERTIES  the server's properties: a file, or Properties/NAME on the class path; they must",
             "                 load the robot (dlcEnabled, dlcName) and bound every run (maxSimulationTime or",
             "                 exitWhenClientsDone)",
@@ -29,6 +30,8 @@ public final class SweepOptions {
             "  --jobs N       runs at a time (default: the number of cores)",
             "  --timeout S    wall-clock seconds after which a run is stopped and counted as failed (default 600)",
             "  --out DIR      where results.csv, summary.png and runs/SEED-PLAN/ go (created if need be)",
+            "  --resume       go on with the sweep in DIR that was interrupted: run only the runs it has no",
+            "                 results for (the other options must be those it was started with)",
             "  -h, --help     print this and exit");
 
     public final String properties;
@@ -38,15 +41,18 @@ public final class SweepOptions {
     public final int jobs;
     public final double timeoutSeconds;
     public final Path out;
+    /** Go on with the sweep in {@link #out}: run only what it has no results for. */
+    public final boolean resume;
 
     private SweepOptions(String properties, List<Long> seeds, List<String> plans, int jobs, double timeoutSeconds,
-                         Path out) {
+                         Path out, boolean resume) {
         this.properties = properties;
         this.seeds = Collections.unmodifiableList(seeds);
         this.plans = Collections.unmodifiableList(plans);
         this.jobs = jobs;
         this.timeoutSeconds = timeoutSeconds;
         this.out = out;
+        this.resume = resume;
     }
 
     /**
@@ -62,6 +68,7 @@ public final class SweepOptions {
         int jobs = Runtime.getRuntime().availableProcessors();
         double timeout = DEFAULT_TIMEOUT;
         Path out = null;
+        boolean resume = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -74,6 +81,7 @@ public final class SweepOptions {
                 case "--jobs" -> jobs = jobs(value(args, ++i, a));
                 case "--timeout" -> timeout = positive(value(args, ++i, a), a, 1.0e7);
                 case "--out" -> out = Paths.get(value(args, ++i, a));
+                case "--resume" -> resume = true;
                 default -> throw new IllegalArgumentException((a.startsWith("-") ? "unknown option " : "unexpected argument ") + a);
             }
         }
@@ -83,7 +91,7 @@ public final class SweepOptions {
         if (seeds.size() * (long) Math.max(1, plans.size()) > MAX_RUNS) {
             throw new IllegalArgumentException("more than " + MAX_RUNS + " runs");
         }
-        return new SweepOptions(properties, seeds, plans, jobs, timeout, out);
+        return new SweepOptions(properties, seeds, plans, jobs, timeout, out, resume);
     }
 
     private static String value(String[] args, int i, String option) {

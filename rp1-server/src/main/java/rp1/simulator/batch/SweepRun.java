@@ -4,13 +4,16 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 
 import rp1.simulator.Simulation;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.LaunchOptions;
 import rp1.simulator.launch.RunningServer;
 import rp1.simulator.launch.ServerLauncher;
-import rp1.simulator.launch.ServerMain;
 import rp1.simulator.launch.StartupException;
 import rp1.simulator.launch.ViewHook;
 
@@ -25,6 +28,8 @@ public final class SweepRun {
     public static final String PROPERTIES = "run.ini";
     /** The server's log in each run's folder. */
     public static final String LOG = "server.log";
+    /** How long stopping waits for a server that is starting. */
+    private static final long START_WAIT_SECONDS = 30;
 
     private final Path dir;
     private RunStatistics statistics;
@@ -45,16 +50,41 @@ public final class SweepRun {
     }
 
     private int run() {
-        RunningServer server;
+        // Stopped by the sweep (a timeout, the sweep interrupted: SIGTERM), even while it starts, the
+        // run still closes its recording and event log before the process ends.
+        CompletableFuture<RunningServer> started = new CompletableFuture<>();
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnceStarted(started), "stop the run"));
+        RunningServer server = null;
         try {
             server = ServerLauncher.start(new String[] {"-p", dir.resolve(PROPERTIES).toString()},
                     Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch));
         } catch (StartupException e) {
             return report(RunReport.failed("startup failed: " + e.getMessage(), e.getExitStatus()));
+        } finally {
+            started.complete(server);
         }
-        // Stopped by the sweep (a timeout), the run still closes its recording and event log.
-        int status = ServerMain.awaitExit(server);
+        int status;
+        try {
+            status = server.awaitExit();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return ExitStatus.OK;
+        }
         return report(new RunReport(endTime, server.getStopReason(), status, robots));
+    }
+
+    /** The shutdown hook: waits until the server has started (if it is starting), then stops it cleanly. */
+    private static void stopOnceStarted(CompletableFuture<RunningServer> started) {
+        try {
+            RunningServer server = started.get(START_WAIT_SECONDS, TimeUnit.SECONDS);
+            if (server != null) {
+                server.stop();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (ExecutionException | TimeoutException e) {
+            // It did not start: there is nothing to close.
+        }
     }
 
     /**

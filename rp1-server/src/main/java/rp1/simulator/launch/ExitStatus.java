@@ -8,6 +8,12 @@ public final class ExitStatus {
     public static final int STARTUP_FAILED = 1;
     /** A loaded client failed: its constructor, initialize() or run() threw. */
     public static final int CLIENT_FAILED = 2;
+    /**
+     * The run went as asked, but what it was to leave on disk is not whole: the recording, the event
+     * log or a picture could not be written (a full disk, a file that cannot be renamed). The message
+     * names the file; nothing half-written is left under a file's own name.
+     */
+    public static final int OUTPUT_FAILED = 4;
 
     private ExitStatus() {
     }

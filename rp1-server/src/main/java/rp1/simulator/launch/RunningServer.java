@@ -1,6 +1,8 @@
 package rp1.simulator.launch;
 
 import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.OptionalInt;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -20,7 +22,9 @@ import rp1.simulator.record.RunRecords;
  * Ctrl-C through {@code rp1.Server}'s shutdown hook, the view's exit), at {@code maxSimulationTime},
  * when every loaded client is done ({@code exitWhenClientsDone}), or when a loaded client fails to
  * initialize. Stopping closes every client, stops the scheduler, finishes the recording and event log
- * (if any) and flushes and closes the log; the exit status says how it ended ({@link ExitStatus}).
+ * (if any) and flushes and closes the log; the exit status says how it ended ({@link ExitStatus}),
+ * {@link ExitStatus#OUTPUT_FAILED} if it ended as asked but its recording, event log or a picture
+ * could not be written.
  */
 public final class RunningServer {
     /** How long stopping waits for the scheduler to finish the task it is running. */
@@ -232,7 +236,15 @@ public final class RunningServer {
         parts.simulation.shutdown();
         joinScheduler();
         parts.records.close();
-        closeView();
+        List<String> outputFailures = new ArrayList<>(parts.records.failures());
+        closeView(outputFailures);
+        for (String failure : outputFailures) {
+            log.important("The run's output is not whole: " + failure);
+        }
+        if (!outputFailures.isEmpty() && status == ExitStatus.OK) {
+            exitStatus = ExitStatus.OUTPUT_FAILED;
+            log.important("Exit status " + ExitStatus.OUTPUT_FAILED + " (the run's output could not be written)");
+        }
         parts.registry.closeAll("the server is shutting down");
         Runtime rt = Runtime.getRuntime();
         log.raw("  Total Memory used by JVM: " + rt.totalMemory());
@@ -254,9 +266,12 @@ public final class RunningServer {
         }
     }
 
-    private void closeView() {
+    /** Closes the view; a picture it could not write is added to {@code outputFailures}. */
+    private void closeView(List<String> outputFailures) {
         try {
             view.close();
+        } catch (IOException e) {
+            outputFailures.add(e.getMessage());
         } catch (Exception e) {
             parts.log.log("closing the view failed: " + LoadedClient.describe(e));
         }

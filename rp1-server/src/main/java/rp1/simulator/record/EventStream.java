@@ -1,10 +1,7 @@
 package rp1.simulator.record;
 
-import java.io.BufferedOutputStream;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.zip.CRC32;
 
@@ -16,7 +13,8 @@ import rp1.simulator.session.ClientSession;
 /**
  * Every event sent to a client, as one line of text each ({@link EventText}): written to an event log
  * if there is one, and counted and checksummed, so that a recording can say what its replay must
- * give. The live run and its replay both write through here, on the thread running tasks.
+ * give. The live run and its replay both write through here, on the thread running tasks. The log
+ * is {@code NAME.part} until it is closed ({@link RunFile}); {@link #flush()} puts it on disk.
  */
 public final class EventStream implements Simulation.EventListener {
     /** The version of the event log's line format: raise it when a line changes. */
@@ -26,19 +24,18 @@ public final class EventStream implements Simulation.EventListener {
 
     private final CRC32 checksum = new CRC32();
     private final RsLogInterface log;
-    private final String fileName;
-    private OutputStream out;
+    private RunFile out;
     private long count;
+    private String failure;
 
-    private EventStream(OutputStream out, String fileName, RsLogInterface log) {
+    private EventStream(RunFile out, RsLogInterface log) {
         this.out = out;
-        this.fileName = fileName;
         this.log = log;
     }
 
     /** A stream that only counts and checksums. */
     public static EventStream counting() {
-        return new EventStream(null, null, null);
+        return new EventStream(null, null);
     }
 
     /**
@@ -47,9 +44,17 @@ public final class EventStream implements Simulation.EventListener {
      * @param log where a failure to write is reported (the run goes on without the log)
      */
     public static EventStream toFile(Path file, RsLogInterface log) throws IOException {
-        OutputStream w = new BufferedOutputStream(Files.newOutputStream(file), 1 << 16);
-        w.write((HEADER + '\n').getBytes(StandardCharsets.UTF_8));
-        return new EventStream(w, file.toString(), log);
+        return toFile(RunFile.create(file), log);
+    }
+
+    static EventStream toFile(RunFile file, RsLogInterface log) throws IOException {
+        try {
+            file.write((HEADER + '\n').getBytes(StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            file.abandon();
+            throw e;
+        }
+        return new EventStream(file, log);
     }
 
     @Override
@@ -65,10 +70,34 @@ public final class EventStream implements Simulation.EventListener {
             try {
                 out.write(line);
             } catch (IOException e) {
-                log.logIt("X", "Cannot write the event log " + fileName + "; it stops here: " + e.getMessage());
-                closeQuietly();
+                stop("cannot write the event log " + out.file() + ": " + e.getMessage());
             }
         }
+    }
+
+    /** Puts the events logged so far on disk; a failure stops the log. Any thread. */
+    public synchronized void flush() {
+        if (out == null) {
+            return;
+        }
+        try {
+            out.flush();
+        } catch (IOException e) {
+            stop("cannot write the event log " + out.file() + ": " + e.getMessage());
+        }
+    }
+
+    /** Why the event log is not whole (it could not be written or finished), or null. */
+    public synchronized String failure() {
+        return failure;
+    }
+
+    /** The log stops here; the events are still counted, for the recording's end. */
+    private void stop(String why) {
+        failure = why + "; the events logged before are in " + out.unfinished();
+        log.logIt("X", failure);
+        out.abandon();
+        out = null;
     }
 
     /** Events sent so far. */
@@ -81,20 +110,24 @@ public final class EventStream implements Simulation.EventListener {
         return checksum.getValue();
     }
 
-    /** Flushes and closes the event log, if any. */
-    public synchronized void close() throws IOException {
+    /** Closes the event log without finishing it (the run did not start), leaving it as {@code NAME.part}. */
+    synchronized void abandon() {
         if (out != null) {
-            OutputStream w = out;
+            out.abandon();
             out = null;
-            w.close();
         }
     }
 
-    private void closeQuietly() {
+    /** Finishes the event log, if any, under its final name; a failure is {@link #failure()}. */
+    public synchronized void close() {
+        if (out == null) {
+            return;
+        }
         try {
-            close();
+            out.finish();
+            out = null;
         } catch (IOException e) {
-            log.logIt("X", "Cannot close the event log " + fileName + ": " + e.getMessage());
+            stop("cannot finish the event log " + out.file() + ": " + e.getMessage());
         }
     }
 }

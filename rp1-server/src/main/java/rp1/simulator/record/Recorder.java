@@ -1,9 +1,7 @@
 package rp1.simulator.record;
 
 import java.io.IOException;
-import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.Map;
@@ -20,8 +18,9 @@ import rp1.simulator.world.WorldModel;
 /**
  * Writes the recording of a run (docs/recording.md) as it happens: the header when opened, each
  * input as it is applied (with the number of model tasks run before it and its time), and the end
- * when closed. It never stops the run: if it cannot write, it says so in the log and notes in the
- * file that the recording broke off.
+ * when closed. The file is {@code NAME.part} until it is closed ({@link RunFile}); {@link #flush()}
+ * puts what was recorded on disk. It never stops the run: if it cannot write, it says so in the log,
+ * notes in the file (if it still can) that the recording broke off, and {@link #failure()} says why.
  */
 public final class Recorder implements InputQueue.Listener {
     /** What a run starts from. */
@@ -32,33 +31,38 @@ public final class Recorder implements InputQueue.Listener {
     private final RsLogInterface log;
     private final String fileName;
     private final Set<Integer> clients = new HashSet<>();
-    private Writer out;
+    private RunFile out;
+    private String failure;
 
-    private Recorder(Writer out, String fileName, Scheduler scheduler, RsLogInterface log) {
+    private Recorder(RunFile out, Scheduler scheduler, RsLogInterface log) {
         this.out = out;
-        this.fileName = fileName;
+        this.fileName = out.file().toString();
         this.scheduler = scheduler;
         this.log = log;
     }
 
     /**
-     * Creates (or truncates) {@code file} and writes the header. Register the recorder with the
-     * simulation's input queue before the run starts.
+     * Starts the recording {@code file} ({@code NAME.part} until it is closed) and writes the header.
+     * Register the recorder with the simulation's input queue before the run starts.
      */
     public static Recorder open(Path file, Header header, Scheduler scheduler, RsLogInterface log) throws IOException {
-        Writer w = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
-        Recorder r = new Recorder(w, file.toString(), scheduler, log);
+        return open(RunFile.create(file), header, scheduler, log);
+    }
+
+    static Recorder open(RunFile file, Header header, Scheduler scheduler, RsLogInterface log) throws IOException {
+        Recorder r = new Recorder(file, scheduler, log);
         try {
             r.writeHeader(header);
         } catch (IOException e) {
-            w.close();
+            file.abandon();
             throw e;
         }
         return r;
     }
 
     private void writeHeader(Header h) throws IOException {
-        out.write("# A run of the RP1 simulator; replay it with: ./rp1 replay " + Path.of(fileName).getFileName() + "\n");
+        out.write(("# A run of the RP1 simulator; replay it with: ./rp1 replay " + out.file().getFileName() + "\n")
+                .getBytes(StandardCharsets.UTF_8));
         write(new TextLine(RecordingFormat.MAGIC).integer(RecordingFormat.VERSION));
         write(new TextLine(RecordingFormat.WORLD_MODEL).integer(WorldModel.VERSION));
         write(new TextLine(RecordingFormat.SEED).integer(h.seed()));
@@ -68,13 +72,12 @@ public final class Recorder implements InputQueue.Listener {
         String[] lines = h.planText().split("\r\n|\r|\n", -1);
         write(new TextLine(RecordingFormat.PLAN).text(h.planName()).integer(lines.length));
         for (String line : lines) {
-            out.write(RecordingFormat.PLAN_LINE + line + "\n");
+            out.write((RecordingFormat.PLAN_LINE + line + "\n").getBytes(StandardCharsets.UTF_8));
         }
     }
 
     private void write(TextLine line) throws IOException {
-        out.write(line.toString());
-        out.write('\n');
+        out.write((line + "\n").getBytes(StandardCharsets.UTF_8));
     }
 
     @Override
@@ -101,16 +104,38 @@ public final class Recorder implements InputQueue.Listener {
         }
     }
 
-    /** Stops recording with a line that says why, so a replay refuses the file with the reason. */
+    /**
+     * Stops recording with a line that says why, so a replay refuses the file with the reason; the
+     * file keeps its {@code .part} name, as it is not a whole recording.
+     */
     private void breakOff(String reason) {
+        failure = "the recording " + fileName + " stops at " + scheduler.recordedTime() + " s: " + reason
+                + "; what was recorded is in " + out.unfinished();
         log.logIt("X", "The recording " + fileName + " stops here: " + reason);
         try {
             write(new TextLine(RecordingFormat.BROKEN).text(reason));
-            out.close();
         } catch (IOException e) {
-            log.logIt("X", "Cannot close the recording " + fileName + ": " + e.getMessage());
+            // The disk that refused the input refuses the note too; the failure is reported anyway.
         }
+        out.abandon();
         out = null;
+    }
+
+    /** Puts everything recorded so far on disk; a failure breaks the recording off. Any thread. */
+    public synchronized void flush() {
+        if (out == null) {
+            return;
+        }
+        try {
+            out.flush();
+        } catch (IOException e) {
+            breakOff("cannot write: " + e.getMessage());
+        }
+    }
+
+    /** Why the recording is not whole (it broke off, or could not be finished), or null. */
+    public synchronized String failure() {
+        return failure;
     }
 
     /**
@@ -126,9 +151,12 @@ public final class Recorder implements InputQueue.Listener {
         try {
             write(new TextLine(RecordingFormat.END).integer(scheduler.modelTasksRun()).real(scheduler.recordedTime())
                     .word("events").integer(events.count()).word("crc").word(Long.toHexString(events.checksum())));
-            out.close();
+            out.finish();
         } catch (IOException e) {
-            log.logIt("X", "Cannot finish the recording " + fileName + ": " + e.getMessage());
+            failure = "cannot finish the recording " + fileName + ": " + e.getMessage() + "; what reached the disk is in "
+                    + out.unfinished();
+            log.logIt("X", "C" + failure.substring(1));
+            out.abandon();
         }
         out = null;
     }

@@ -19,9 +19,11 @@ import rp1.simulator.session.Request;
  * @param clients    client number to the description the run gave it
  * @param steps      the inputs, in the order the run applied them
  * @param end        how the run ended, or null if the recording has no end (the run did not stop cleanly)
+ * @param tornLine   the number of the last line if it was cut off while being written (the run was
+ *                   killed) and so left out; 0 if the file ends with a whole line
  */
 public record Recording(String file, long seed, Map<String, String> properties, String planName, String planText,
-                        Map<Integer, String> clients, List<Step> steps, End end) {
+                        Map<Integer, String> clients, List<Step> steps, End end, int tornLine) {
 
     /** Copies the collections. */
     public Recording {

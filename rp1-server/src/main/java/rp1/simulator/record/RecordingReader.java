@@ -31,10 +31,12 @@ public final class RecordingReader {
     private final Map<Integer, String> clients = new HashMap<>();
     private final List<Recording.Step> steps = new ArrayList<>();
     private Recording.End end;
+    private final int tornLine;
 
-    private RecordingReader(String file, List<String> lines) {
+    private RecordingReader(String file, List<String> lines, int tornLine) {
         this.file = file;
         this.lines = lines;
+        this.tornLine = tornLine;
     }
 
     /** Reads and checks the recording {@code path}. */
@@ -52,12 +54,16 @@ public final class RecordingReader {
 
     /**
      * Reads and checks a recording held in {@code text}; {@code file} names it in messages. A last line
-     * without its line feed was cut off while being written (the run was killed) and is left out.
+     * without its line feed was cut off while being written (the run was killed) and is left out
+     * ({@link Recording#tornLine()} says so).
      */
     public static Recording parse(String file, String text) throws RecordingException {
+        if (text.isEmpty()) {
+            throw new RecordingException(file + ": empty recording (the run was stopped before anything was written)");
+        }
         List<String> lines = new ArrayList<>(List.of(text.split("\n", -1)));
-        lines.remove(lines.size() - 1);
-        return new RecordingReader(file, lines).parse();
+        String torn = lines.remove(lines.size() - 1);
+        return new RecordingReader(file, lines, torn.isEmpty() ? 0 : lines.size() + 1).parse();
     }
 
     private Recording parse() throws RecordingException {
@@ -68,7 +74,7 @@ public final class RecordingReader {
             }
             body(in);
         }
-        return new Recording(file, seed, properties, planName, planText, clients, steps, end);
+        return new Recording(file, seed, properties, planName, planText, clients, steps, end, tornLine);
     }
 
     /** The next line that is not a comment, or null at the end of the file. */

@@ -37,8 +37,13 @@ public final class Replayer {
         this.events = events;
     }
 
-    /** How far a replay got. */
-    public record Outcome(long tasks, double time, long events, boolean complete, String difference) {
+    /**
+     * How far a replay got.
+     *
+     * @param partial whether the recording ran out before the replay got where it was asked to stop:
+     *                it has no end line (the run did not stop cleanly), and its last input was applied
+     */
+    public record Outcome(long tasks, double time, long events, boolean complete, boolean partial, String difference) {
         /** Whether the replay reached the recorded end and sent exactly the recorded events. */
         public boolean matches() {
             return complete && difference == null;
@@ -86,6 +91,11 @@ public final class Replayer {
         }
     }
 
+    /** Why the replay's event log could not be written whole, or null. */
+    public String eventLogFailure() {
+        return events.failure();
+    }
+
     /** The simulation being replayed (its world is what a picture shows). */
     public Simulation simulation() {
         return simulation;
@@ -93,11 +103,11 @@ public final class Replayer {
 
     /**
      * Replays the run up to its end, or up to simulated time {@code until} (every task and input due
-     * by then), then closes the event log.
+     * by then), then finishes the event log ({@link #eventLogFailure()} says if it could not be written).
      *
      * @throws RecordingException if the run cannot be followed: tasks run out before an input's place
      */
-    public Outcome run(double until) throws RecordingException, IOException {
+    public Outcome run(double until) throws RecordingException {
         try {
             return replay(until);
         } finally {
@@ -116,16 +126,16 @@ public final class Replayer {
         }
         Recording.End end = recording.end();
         if (end == null) {
-            return new Outcome(scheduler.modelTasksRun(), scheduler.recordedTime(), events.count(), false, null);
+            return new Outcome(scheduler.modelTasksRun(), scheduler.recordedTime(), events.count(), false, true, null);
         }
         if (!runTo(end.tasks(), until, end.line())) {
             return stopped(until);
         }
-        return new Outcome(end.tasks(), end.time(), events.count(), true, difference(end));
+        return new Outcome(end.tasks(), end.time(), events.count(), true, false, difference(end));
     }
 
     private Outcome stopped(double until) {
-        return new Outcome(simulation.getScheduler().modelTasksRun(), until, events.count(), false, null);
+        return new Outcome(simulation.getScheduler().modelTasksRun(), until, events.count(), false, false, null);
     }
 
     /** Runs model tasks until {@code tasks} have run; false if the next one is due after {@code until}. */

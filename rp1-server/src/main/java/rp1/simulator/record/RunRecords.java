@@ -2,6 +2,11 @@ package rp1.simulator.record;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
@@ -9,22 +14,36 @@ import rp1.simulator.Simulation;
 /**
  * What a server keeps of its run: the recording ({@code recordFileName}) and the event log
  * ({@code eventLogFileName}), either or both. Opened before the run starts, closed once the
- * scheduler has stopped.
+ * scheduler has stopped. While the run goes, both are put on disk once a wall-clock second, so a
+ * process that is killed loses at most its last second; a run at {@code simulationSpeed=max} pays
+ * for one write a second, not one per line.
  */
 public final class RunRecords implements AutoCloseable {
+    /** Wall-clock time between two flushes. */
+    private static final long FLUSH_MILLIS = 1000;
+
     private final Recorder recorder;
     private final EventStream events;
-    private final RsLogInterface log;
+    private final ScheduledExecutorService flusher;
 
-    private RunRecords(Recorder recorder, EventStream events, RsLogInterface log) {
+    private RunRecords(Recorder recorder, EventStream events) {
         this.recorder = recorder;
         this.events = events;
-        this.log = log;
+        if (events == null) {
+            flusher = null;
+            return;
+        }
+        flusher = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "rp1-records-flush");
+            t.setDaemon(true);
+            return t;
+        });
+        flusher.scheduleWithFixedDelay(this::flush, FLUSH_MILLIS, FLUSH_MILLIS, TimeUnit.MILLISECONDS);
     }
 
     /** Nothing kept. */
     public static RunRecords none() {
-        return new RunRecords(null, null, null);
+        return new RunRecords(null, null);
     }
 
     /**
@@ -45,13 +64,13 @@ public final class RunRecords implements AutoCloseable {
             try {
                 recorder = Recorder.open(recording, header, simulation.getScheduler(), log);
             } catch (IOException e) {
-                events.close();
+                events.abandon();
                 throw new IOException("cannot create the recording " + recording + " (recordFileName): " + e.getMessage(), e);
             }
             simulation.getInputs().setListener(recorder);
         }
         simulation.addEventListener(events);
-        return new RunRecords(recorder, events, log);
+        return new RunRecords(recorder, events);
     }
 
     private static EventStream openEventLog(Path file, RsLogInterface log) throws IOException {
@@ -62,18 +81,42 @@ public final class RunRecords implements AutoCloseable {
         }
     }
 
-    /** Writes the end of the recording and closes both files; call after the scheduler has stopped. */
+    private void flush() {
+        events.flush();
+        if (recorder != null) {
+            recorder.flush();
+        }
+    }
+
+    /**
+     * Writes the end of the recording and finishes both files under their names; call after the
+     * scheduler has stopped. What could not be written is then in {@link #failures()}.
+     */
     @Override
     public void close() {
+        if (flusher != null) {
+            flusher.shutdownNow();
+        }
         if (recorder != null) {
             recorder.close(events);
         }
         if (events != null) {
-            try {
-                events.close();
-            } catch (IOException e) {
-                log.logIt("X", "Cannot finish the event log: " + e.getMessage());
-            }
+            events.close();
         }
+    }
+
+    /**
+     * What could not be written (each naming its file and the error), empty when every file is whole.
+     * A run with failures must not pass for a kept one: the server exits with a status of its own.
+     */
+    public List<String> failures() {
+        List<String> failures = new ArrayList<>();
+        if (recorder != null && recorder.failure() != null) {
+            failures.add(recorder.failure());
+        }
+        if (events != null && events.failure() != null) {
+            failures.add(events.failure());
+        }
+        return failures;
     }
 }

@@ -147,6 +147,30 @@ class RecordingReaderTest {
         Recording r = RecordingReader.parse(FILE, text.substring(0, text.length() - 8));
         assertNull(r.end(), "a run that was killed has no end");
         assertEquals(2, r.steps().size());
+        assertEquals(11, r.tornLine(), "the line left out is named");
+        assertEquals(0, parse(sound()).tornLine());
+    }
+
+    @Test
+    void anEmptyFileIsRefusedSayingTheRunWasStoppedBeforeAnythingWasWritten() {
+        RecordingException e = assertThrows(RecordingException.class, () -> RecordingReader.parse(FILE, ""));
+        assertEquals("run.rec: empty recording (the run was stopped before anything was written)", e.getMessage());
+    }
+
+    @Test
+    void theReplayOfARecordingWithoutItsEndSaysItIsPartialAndWhichLineWasLeftOut() throws Exception {
+        String text = String.join("\n", replaced(7, "|placement p { geometry: 1, 1, 0, 0.2; }"));
+        Path file = dir.resolve(FILE);
+        Files.write(file, text.substring(0, text.length() - 8).getBytes(StandardCharsets.UTF_8));
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int status = Replay.run(new String[] {file.toString()}, new PrintStream(new ByteArrayOutputStream()),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+        assertEquals(Replay.PARTIAL, status, err.toString(StandardCharsets.UTF_8));
+        String[] lines = err.toString(StandardCharsets.UTF_8).split("\n");
+        assertEquals("rp1.Replay: " + file + ":11: the last line was cut off while it was being written (the run was"
+                + " killed); it is left out", lines[0]);
+        assertTrue(lines[1].startsWith("rp1.Replay: partial recording: " + file + " ends at t=0.0 s (it has no end line:"
+                + " the run did not stop cleanly); replayed as far as it goes: "), lines[1]);
     }
 
     @Test

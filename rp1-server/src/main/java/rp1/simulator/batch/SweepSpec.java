@@ -1,0 +1,121 @@
+package rp1.simulator.batch;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.ArrayList;
+import java.util.HexFormat;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/**
+ * What decides a sweep's runs and their rows: the properties' text, the floor plans (names and text),
+ * the seeds and the timeout; not {@code --jobs}, which only decides how many run at once. Kept in the
+ * output folder as {@code sweep.ini}, so that {@code --resume} goes on only with the sweep that
+ * folder holds. Immutable.
+ */
+final class SweepSpec {
+    /** The file in the output folder. */
+    static final String FILE = "sweep.ini";
+    private static final String FORMAT = "rp1-sweep";
+    /** What each key is called in a message, in the order they are written. */
+    private static final Map<String, String> NAMES = names();
+
+    private final Map<String, String> values;
+
+    private SweepSpec(Map<String, String> values) {
+        this.values = values;
+    }
+
+    private static Map<String, String> names() {
+        Map<String, String> names = new LinkedHashMap<>();
+        names.put(FORMAT, "the format of " + FILE);
+        names.put("properties.sha256", "the properties' text (-p)");
+        names.put("plans", "the floor plans (--plans)");
+        names.put("plans.sha256", "the floor plans' text");
+        names.put("seeds", "the seeds (--seeds)");
+        names.put("timeout", "the timeout (--timeout)");
+        return names;
+    }
+
+    /** The specification of a sweep of {@code seeds} with these properties and plans (name to text). */
+    static SweepSpec of(String propertiesText, Map<String, String> plans, List<Long> seeds, double timeout) {
+        Map<String, String> v = new LinkedHashMap<>();
+        v.put(FORMAT, "1");
+        v.put("properties.sha256", sha256(propertiesText));
+        v.put("plans", String.join(",", plans.keySet()));
+        StringBuilder planTexts = new StringBuilder();
+        plans.forEach((name, text) -> planTexts.append(name).append('\0').append(text).append('\0'));
+        v.put("plans.sha256", sha256(planTexts.toString()));
+        v.put("seeds", seeds.stream().map(String::valueOf).collect(Collectors.joining(",")));
+        v.put("timeout", Double.toString(timeout));
+        return new SweepSpec(v);
+    }
+
+    /** Writes {@code sweep.ini} into {@code dir}, replacing it. */
+    void write(Path dir) throws IOException {
+        StringBuilder b = new StringBuilder("# The sweep whose runs this folder holds; rp1.Sweep --resume goes on with"
+                + " this one only\n");
+        values.forEach((k, v) -> b.append(k).append('=').append(v).append('\n'));
+        Files.write(dir.resolve(FILE), b.toString().getBytes(StandardCharsets.UTF_8));
+    }
+
+    /**
+     * The specification kept in {@code dir}.
+     *
+     * @throws SweepException if there is none (no sweep ran there) or it cannot be read
+     */
+    static SweepSpec read(Path dir) throws SweepException {
+        List<String> lines;
+        try {
+            lines = Files.readAllLines(dir.resolve(FILE), StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new SweepException("--resume: " + dir + " holds no sweep to go on with (it has no " + FILE + ")");
+        } catch (IOException e) {
+            throw new SweepException("--resume: cannot read " + dir.resolve(FILE) + ": " + e.getMessage());
+        }
+        Map<String, String> v = new LinkedHashMap<>();
+        for (String line : lines) {
+            int eq = line.indexOf('=');
+            if (!line.startsWith("#") && eq > 0) {
+                v.put(line.substring(0, eq), line.substring(eq + 1));
+            }
+        }
+        return new SweepSpec(v);
+    }
+
+    /** What differs from {@code here}, as "NAME: there A, here B" phrases; empty if nothing does. */
+    List<String> differences(SweepSpec here) {
+        List<String> d = new ArrayList<>();
+        for (Map.Entry<String, String> key : NAMES.entrySet()) {
+            String there = values.get(key.getKey());
+            String now = here.values.get(key.getKey());
+            if (!now.equals(there)) {
+                d.add(key.getKey().endsWith(".sha256") ? key.getValue() + " is not the same"
+                        : key.getValue() + ": " + shown(there) + " there, " + shown(now) + " here");
+            }
+        }
+        return d;
+    }
+
+    private static String shown(String value) {
+        if (value == null) {
+            return "none";
+        }
+        return value.length() > 60 ? value.substring(0, 57) + "..." : value;
+    }
+
+    private static String sha256(String text) {
+        try {
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8)));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java has SHA-256", e);
+        }
+    }
+}

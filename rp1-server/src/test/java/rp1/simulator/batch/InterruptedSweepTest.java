@@ -1,0 +1,123 @@
+package rp1.simulator.batch;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+import rp1.Sweep;
+import rp1.simulator.launch.JavaCommand;
+
+/**
+ * A sweep stopped by a signal keeps the runs it finished, stops the others cleanly and says how to go
+ * on; {@code --resume} then runs only what is missing, and only for the same sweep.
+ */
+@Timeout(120)
+class InterruptedSweepTest {
+    @TempDir
+    Path dir;
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+    /** Runs of a simulated second at real speed: each takes a second or two of wall time. */
+    private String[] sweep(String seeds, String... more) throws IOException {
+        Files.write(dir.resolve("home.txt"), List.of("caption: \"with home\";", "wall w { geometry: 0, 0, 4, 0, 0.05; }",
+                "placement home { geometry: 1, 1, 0, 0.2; }"), StandardCharsets.UTF_8);
+        Files.write(dir.resolve("slow.ini"), List.of("floorPlanFileName=" + dir.resolve("home.txt"), "enableGUI=false",
+                "enableNetworkClients=false", "simulationSpeed=1", "maxSimulationTime=1", "dlcEnabled=true",
+                "dlcName=" + SleepyDlc.class.getName()), StandardCharsets.UTF_8);
+        List<String> args = new ArrayList<>(List.of("-p", dir.resolve("slow.ini").toString(), "--seeds", seeds,
+                "--jobs", "1", "--out", dir.resolve("out").toString()));
+        args.addAll(List.of(more));
+        return args.toArray(new String[0]);
+    }
+
+    private int inProcess(String... args) {
+        return Sweep.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8), false);
+    }
+
+    private List<String> rows() throws IOException {
+        Path results = dir.resolve("out/results.csv");
+        return Files.exists(results) ? Files.readAllLines(results, StandardCharsets.UTF_8) : List.of();
+    }
+
+    @Test
+    void aSweepStoppedBySigtermKeepsItsFinishedRunsAndResumeRunsOnlyTheOthers() throws Exception {
+        String[] args = sweep("1-4");
+        Process sweep = new ProcessBuilder(JavaCommand.of(List.of(), Sweep.class.getName(), args))
+                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve("sweep.txt").toFile()).start();
+        Path second = dir.resolve("out/runs/2-home");
+        try {
+            // results.csv has the first run's row as soon as it ends; stop while the second one runs.
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (!(rows().size() == 2 && Files.exists(second.resolve("recording.txt.part")))) {
+                assertTrue(System.nanoTime() < deadline && sweep.isAlive(), "the first run ends, the second starts: "
+                        + rows() + Files.readString(dir.resolve("sweep.txt")));
+                Thread.sleep(20);
+            }
+            sweep.destroy();
+            assertTrue(sweep.waitFor(60, TimeUnit.SECONDS), "the sweep stops");
+        } finally {
+            sweep.destroyForcibly();
+        }
+        String said = Files.readString(dir.resolve("sweep.txt"));
+        assertEquals(130, sweep.exitValue(), said);
+        assertTrue(said.contains("rp1.Sweep: interrupted; 1 of 4 runs finished (0 failed), in "
+                + dir.resolve("out/results.csv") + " and " + dir.resolve("out/summary.png") + ". To run the other 3, add"
+                + " --resume to the same command:\n  rp1.Sweep " + String.join(" ", args) + " --resume"), said);
+        List<String> rows = rows();
+        assertEquals(2, rows.size(), rows.toString());
+        assertTrue(rows.get(1).startsWith("1," + dir.resolve("home.txt") + ",,1.0,max-simulation-time,0,"), rows.get(1));
+        assertTrue(Files.exists(dir.resolve("out/summary.png")));
+        assertTrue(Files.readString(second.resolve("recording.txt")).contains("\nend "),
+                "the run that was stopped closed its recording");
+        assertFalse(Files.exists(dir.resolve("out/runs/3-home")), "no run was started after the signal");
+
+        FileTime firstRun = Files.getLastModifiedTime(dir.resolve("out/runs/1-home/" + RunReport.FILE));
+        assertEquals(0, inProcess(sweep("1-4", "--resume")), out.toString() + err);
+        assertTrue(out.toString(StandardCharsets.UTF_8).contains("; 1 finished before, 3 to run"), out.toString());
+        assertEquals(firstRun, Files.getLastModifiedTime(dir.resolve("out/runs/1-home/" + RunReport.FILE)),
+                "the run that had finished was not run again");
+        rows = rows();
+        assertEquals(5, rows.size(), rows.toString());
+        for (int seed = 1; seed <= 4; seed++) {
+            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",,1.0,max-simulation-time,0,"),
+                    rows.get(seed));
+        }
+    }
+
+    @Test
+    void resumeRefusesAFolderOfAnotherSweepSayingWhatDiffers() throws Exception {
+        assertEquals(0, inProcess(sweep("1")), out.toString() + err);
+        List<String> before = rows();
+
+        assertEquals(1, inProcess(sweep("1-2", "--resume")));
+        assertEquals("rp1.Sweep: --resume: " + dir.resolve("out") + " holds another sweep (sweep.ini): the seeds"
+                + " (--seeds): 1 there, 1,2 here. Resume it with its own options, or give another --out\n",
+                err.toString(StandardCharsets.UTF_8));
+        assertEquals(before, rows(), "nothing was run");
+    }
+
+    @Test
+    void resumeRefusesAFolderWithoutASweep() throws Exception {
+        Files.createDirectories(dir.resolve("out"));
+        assertEquals(1, inProcess(sweep("1", "--resume")));
+        assertEquals("rp1.Sweep: --resume: " + dir.resolve("out") + " holds no sweep to go on with (it has no"
+                + " sweep.ini)\n", err.toString(StandardCharsets.UTF_8));
+    }
+}
