@@ -272,6 +272,20 @@ public final class Scheduler {
         }
     }
 
+    /**
+     * Whether nothing runs and nothing could run now without something new: no thread holds the right
+     * to run tasks, no input waits and no queued task is due (it lies beyond a held or paced clock, or
+     * the interlock has stopped the clock). With a task queued, an idle lockstep clock is held.
+     */
+    public boolean isIdle() {
+        lock.lock();
+        try {
+            return executor == null && !hasWork();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** Time may not advance until {@link #release()}; tasks and inputs due now still run. */
     public void hold() {
         lock.lock();
