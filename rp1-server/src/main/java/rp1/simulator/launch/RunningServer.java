@@ -18,7 +18,8 @@ import rp1.simulator.record.RunRecords;
  * returns, a writer for a client that falls behind; behavior.md section 3.2, docs/architecture.md)
  * are running. It stops when asked ({@link #stop()},
  * Ctrl-C through {@code rp1.Server}'s shutdown hook, the view's exit), at {@code maxSimulationTime},
- * when every loaded client is done ({@code exitWhenClientsDone}), or when a loaded client fails to
+ * when every loaded client is done ({@code exitWhenClientsDone}), when a max-speed run has nobody
+ * left ({@link #NOBODY_LEFT}), or when a loaded client fails to
  * initialize. Stopping closes every client, stops the scheduler, finishes the recording and event log
  * (if any) and flushes and closes the log; the exit status says how it ended ({@link ExitStatus}).
  */
