@@ -17,7 +17,7 @@ import org.junit.jupiter.api.io.TempDir;
  * At {@code simulationSpeed=max} with the interlock a client that leaves takes its robot away at the
  * first moment the clock would wait for it, however long its connection takes to go down; and a run
  * with a time limit that every client and robot has left ends at once, with a reason, instead of
- * standing still forever short of {@code maxSimulationTime}. Before, the same client gave different
+ * standing still forever short of {@code maxSimulationTime}, as does one that nobody can join. Before, the same client gave different
  * event logs and the server never exited.
  */
 @Timeout(120)
@@ -40,6 +40,24 @@ class LeavingAtMaxSpeedTest {
             } else {
                 assertEquals(first, log, "the event log of a run whose client closed " + delay + " ms after its last acknowledgement");
             }
+        }
+    }
+
+    @Test
+    void aMaxSpeedRunWithoutNetworkClientsEndsWhenItsLoadedClientHasLeft() throws Exception {
+        TestDlc.reset();
+        RunningServer server = TestServer.start(dir, "simulationSpeed=max", "interlockEnabled=true",
+                "enableNetworkClients=false", "dlcEnabled=true", "dlcName=" + TestDlc.class.getName(),
+                "dlcDelivery=pipes");
+        try {
+            assertEquals(OptionalInt.of(ExitStatus.OK), server.awaitExit(20, TimeUnit.SECONDS),
+                    "nobody can come: the run ends instead of standing still");
+            assertEquals(RunningServer.NOBODY_LEFT, server.getStopReason());
+            assertTrue(TestServer.log(dir).contains("network clients are disabled, so nothing more can happen"),
+                    TestServer.log(dir));
+            assertEquals(5, TestDlc.BEATS.size());
+        } finally {
+            server.stop();
         }
     }
 

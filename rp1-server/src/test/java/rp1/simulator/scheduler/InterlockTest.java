@@ -78,6 +78,15 @@ class InterlockTest {
     }
 
     @Test
+    void anEventNumberedBeforeItIsWrittenKeepsThatNumberOnTheWire() {
+        assertTrue(interlock.sending("x"));
+        assertFalse(scheduler.isClockRunning());
+        assertEquals(1, interlock.forClient("x", () -> { }).openInterlock());
+        assertEquals(1, interlock.getCounter());
+        assertTrue(interlock.close("x", 1));
+    }
+
+    @Test
     void theConnectionViewReportsTheCounter() {
         assertEquals(1, interlock.forClient("x", () -> { }).openInterlock());
         assertEquals(1, interlock.forClient("y", () -> { }).getMaximumInterlockIndex());
