@@ -144,9 +144,9 @@ public final class ServerConfig {
         }
         int loaded = dlcEnabled ? dlcNames.size() : 0;
         if (!enableNetworkClients && waitForClients > loaded) {
+            String clients = loaded == 0 ? "no client is" : "only " + loaded + (loaded == 1 ? " client is" : " clients are");
             throw new ConfigException(where + "waitForClients=" + waitForClients + " can never be met: network clients "
-                    + "are disabled (enableNetworkClients=false) and " + (loaded == 0 ? "no client is" : "only " + loaded
-                    + (loaded == 1 ? " client is" : " clients are")) + " loaded (dlcName), each with one robot");
+                    + "are disabled (enableNetworkClients=false) and " + clients + " loaded (dlcName), each with one robot");
         }
         if (lockstep && !interlockEnabled) {
             throw new ConfigException(where + "simulationSpeed=max needs interlockEnabled=true "

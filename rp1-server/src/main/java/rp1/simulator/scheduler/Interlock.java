@@ -95,7 +95,7 @@ public final class Interlock {
         return true;
     }
 
-    /** The number of the event {@code client}'s connection is writing: the one {@link #sending} gave it, or a new one. */
+    /** The number of the event {@code client}'s connection writes: the one {@link #sending} gave it, or a new one. */
     private synchronized int numberFor(Object client) {
         Integer n = numbered.remove(client);
         return n != null ? n : open(client);

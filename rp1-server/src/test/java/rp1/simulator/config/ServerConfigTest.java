@@ -98,7 +98,8 @@ class ServerConfigTest {
     void waitForClientsIsOneByDefaultOnlyAtMaxSpeedWithNetworkClientsAndNoLoadedClient() throws Exception {
         String max = "floorPlanFileName=x\nsimulationSpeed=max\ninterlockEnabled=true\n";
         assertEquals(1, config(max).waitForClients);
-        assertEquals(0, config("floorPlanFileName=x\n").waitForClients, "a paced clock: a client may ask for a timeout first");
+        assertEquals(0, config("floorPlanFileName=x\n").waitForClients,
+                "a paced clock: a client may ask for a timeout first");
         assertEquals(0, config(max + "dlcEnabled=true\ndlcName=a.B\n").waitForClients);
         assertEquals(0, config(max + "dlcEnabled=true\ndlcName=a.B\nenableNetworkClients=false\n").waitForClients);
         assertEquals(2, config(max + "dlcEnabled=true\ndlcName=a.B,c.D\nenableNetworkClients=false\nwaitForClients=2\n")

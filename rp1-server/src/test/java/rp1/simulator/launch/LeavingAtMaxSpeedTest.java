@@ -17,8 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
  * At {@code simulationSpeed=max} with the interlock a client that leaves takes its robot away at the
  * first moment the clock would wait for it, however long its connection takes to go down; and a run
  * with a time limit that every client and robot has left ends at once, with a reason, instead of
- * standing still forever short of {@code maxSimulationTime}, as does one that nobody can join. Before, the same client gave different
- * event logs and the server never exited.
+ * standing still forever short of {@code maxSimulationTime}, as does one that nobody can join. Before,
+ * the same client gave different event logs and the server never exited.
  */
 @Timeout(120)
 class LeavingAtMaxSpeedTest {
@@ -36,9 +36,11 @@ class LeavingAtMaxSpeedTest {
             if (first == null) {
                 first = log;
                 assertTrue(first.contains("\n2.25 1 Heartbeat sequence=9") && !first.contains("\n2.5 1 "),
-                        "the robot left when the clock would next wait for its client, at its beat at 2.25 s:\n" + first);
+                        "the robot left when the clock would next wait for its client, at its beat at 2.25 s:\n"
+                                + first);
             } else {
-                assertEquals(first, log, "the event log of a run whose client closed " + delay + " ms after its last acknowledgement");
+                assertEquals(first, log, "the event log of a run whose client closed " + delay
+                        + " ms after its last acknowledgement");
             }
         }
     }
@@ -81,7 +83,8 @@ class LeavingAtMaxSpeedTest {
             assertEquals(OptionalInt.of(ExitStatus.OK), server.awaitExit(20, TimeUnit.SECONDS),
                     "the server ends although maxSimulationTime can never come");
             assertEquals(RunningServer.NOBODY_LEFT, server.getStopReason());
-            assertTrue(TestServer.log(dir).contains("No robot is left and no client is connected"), TestServer.log(dir));
+            assertTrue(TestServer.log(dir).contains("No robot is left and no client is connected"),
+                    TestServer.log(dir));
             return new String(Files.readAllBytes(dir.resolve("events.txt")), StandardCharsets.UTF_8);
         } finally {
             server.stop();
