@@ -3,6 +3,8 @@ package rp1.simulator.launch;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -13,12 +15,15 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
+import rp1.Replay;
+
 /**
  * At {@code simulationSpeed=max} with the interlock a client that leaves takes its robot away at the
  * first moment the clock would wait for it, however long its connection takes to go down; and a run
  * with a time limit that every client and robot has left ends at once, with a reason, instead of
  * standing still forever short of {@code maxSimulationTime}, as does one that nobody can join. Before,
- * the same client gave different event logs and the server never exited.
+ * the same client gave different event logs and the server never exited. The run, ended that way,
+ * replays to the same events.
  */
 @Timeout(120)
 class LeavingAtMaxSpeedTest {
@@ -43,6 +48,16 @@ class LeavingAtMaxSpeedTest {
                         + " ms after its last acknowledgement");
             }
         }
+        assertReplaysToTheSameEvents(dir.resolve("run-" + CLOSE_DELAYS[CLOSE_DELAYS.length - 1]));
+    }
+
+    private static void assertReplaysToTheSameEvents(Path run) throws Exception {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        int status = Replay.run(new String[] {run.resolve("run.rec").toString(), "--events",
+            run.resolve("replay.txt").toString()}, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(out, true, StandardCharsets.UTF_8));
+        assertEquals(0, status, out.toString(StandardCharsets.UTF_8));
+        assertEquals(Files.readString(run.resolve("events.txt")), Files.readString(run.resolve("replay.txt")));
     }
 
     @Test
@@ -67,7 +82,7 @@ class LeavingAtMaxSpeedTest {
     private static String runOnce(Path dir, int delay) throws Exception {
         Files.createDirectories(dir);
         RunningServer server = TestServer.start(dir, "simulationSpeed=max", "interlockEnabled=true",
-                "maxSimulationTime=10", "eventLogFileName=events.txt", "randomSeed=1");
+                "maxSimulationTime=10", "eventLogFileName=events.txt", "recordFileName=run.rec", "randomSeed=1");
         try {
             try (RawClient c = RawClient.connected(server.getPort())) {
                 c.sendBody();
