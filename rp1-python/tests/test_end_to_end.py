@@ -190,6 +190,29 @@ def test_the_wanderer_prints_its_position_every_second_and_exits(rp1_server: Loc
     assert all(0.0 < float(x) < 3.0 and 0.0 < float(y) < 3.0 for x, y in positions), "inside the room"
 
 
+def test_the_wanderer_leaving_at_a_fixed_time_gives_the_same_run_twice_and_the_server_ends(tmp_path) -> None:
+    """With the interlock at max speed the robot of a client that leaves goes at the first moment the
+    clock would wait for it, however fast the connection went down, so two runs give the same event
+    log; and once nobody is left the server ends instead of standing still short of its time limit."""
+    logs = []
+    for run_number in range(2):
+        workdir = tmp_path / f"run{run_number}"
+        workdir.mkdir()
+        properties = {"maxSimulationTime": "60", "eventLogFileName": "events.txt", "logToFile": "true",
+                      "logFileName": "server.log"}
+        with LocalSimulator(REPO_ROOT / "FloorPlans" / "WhiteRoom.txt", workdir, repo_root=REPO_ROOT,
+                            properties=properties) as server:
+            done = subprocess.run([sys.executable, str(EXAMPLES_DIR / "wanderer.py"), "--host", server.host,
+                                   "--port", str(server.port), "--duration", "55"],
+                                  capture_output=True, text=True, timeout=LIMIT)
+            assert done.returncode == 0, done.stderr
+            assert server.process.wait(LIMIT) == 0, "the server ends by itself"
+        assert "No robot is left and no client is connected" in (workdir / "server.log").read_text()
+        logs.append((workdir / "events.txt").read_text())
+    assert logs[0] == logs[1]
+    assert re.search(r"\n55\.0 \d+ Position ", logs[0]), "the wanderer's last position"
+
+
 def test_clientzero_asks_for_the_plan_and_is_placed_at_home(rp1_server: LocalSimulator) -> None:
     process = subprocess.Popen([sys.executable, str(EXAMPLES_DIR / "clientzero.py"), "--host", rp1_server.host,
                                 "--port", str(rp1_server.port)], stdout=subprocess.PIPE, text=True)

@@ -61,6 +61,10 @@ public final class Simulation {
     private final List<EventListener> eventListeners = new CopyOnWriteArrayList<>();
     /** Robots still to be placed before the clock may run ({@code waitForClients}); 0 once it runs. */
     private int waitingFor;
+    /** Robots on the floor now, and whether there ever was one (on the thread running tasks). */
+    private int placedRobots;
+    private boolean robotsPlacedSoFar;
+    private volatile Runnable whenDeserted = () -> { };
 
     public Simulation(RsPlan plan, SimulationSettings settings, RsLogInterface log) {
         this.settings = settings;
@@ -117,21 +121,38 @@ public final class Simulation {
         connection.setLogger(log);
         ClientSession session = new ClientSession(clientNumbers.incrementAndGet(), description, connection, host);
         sessions.add(session);
-        session.setDepartureListener(() -> sessions.remove(session));
-        if (interlock != null && link != Link.DIRECT) {
-            Runnable afterRestart = link == Link.READER ? this::pump : () -> { };
+        session.setDepartureListener(() -> departed(session));
+        boolean interlocked = interlock != null && link != Link.DIRECT;
+        Runnable afterRestart = link == Link.READER ? this::pump : () -> { };
+        if (interlocked) {
             connection.addInterlock(interlock.forClient(session, afterRestart));
+            session.setWriteGate(() -> interlock.sending(session));
         }
         if (link == Link.READER) {
             session.setAfterSubmit(this::pump);
         }
         connection.setProtocolShutdownHandler(() -> {
-            if (interlock != null) {
-                interlock.release(session);
+            if (!interlocked) {
+                session.connectionClosed();
+            } else if (interlock.leave(session, session::queueDeparture)) {
+                afterRestart.run();
             }
-            session.connectionClosed();
         });
         return session;
+    }
+
+    /**
+     * A client's departure has been applied (on the thread running tasks). In lockstep, a run whose
+     * robots have all come and gone can never move again: the deserted action is told.
+     */
+    private void departed(ClientSession session) {
+        sessions.remove(session);
+        if (interlock != null) {
+            interlock.forget(session);
+        }
+        if (settings.isLockstep() && robotsPlacedSoFar && waitingFor == 0 && placedRobots == 0 && sessions.isEmpty()) {
+            whenDeserted.run();
+        }
     }
 
     /** The sessions of the clients currently connected (read it from any thread). */
@@ -188,6 +209,8 @@ public final class Simulation {
      * lockstep clock would otherwise race to the next timed task).
      */
     private void placedRobotsChanged(int placed) {
+        placedRobots = placed;
+        robotsPlacedSoFar |= placed > 0;
         if (waitingFor > 0 && placed >= waitingFor) {
             waitingFor = 0;
         }
@@ -197,6 +220,16 @@ public final class Simulation {
         } else {
             scheduler.release();
         }
+    }
+
+    /**
+     * Tells {@code action}, on the thread running tasks, when a lockstep run is deserted: the clients
+     * that came have all left, no robot is on the floor, and {@code waitForClients} was met, so
+     * simulated time stands still until somebody new connects (behavior.md section 3.5). The server
+     * decides whether that ends the run.
+     */
+    public void whenDeserted(Runnable action) {
+        whenDeserted = action;
     }
 
     /**

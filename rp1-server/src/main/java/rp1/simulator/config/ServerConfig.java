@@ -64,7 +64,10 @@ public final class ServerConfig {
     public final double snapshotInterval;
     /** Whether robots collide with, sense and block the placement of one another (RP1 0.60: no). */
     public final boolean robotsInteract;
-    /** Robots to be placed before simulated time may run (default 1 with only network clients, else 0). */
+    /**
+     * Robots to be placed before simulated time may run: by default 1 at {@code simulationSpeed=max} with
+     * network clients and no loaded client (a lockstep clock would otherwise run ahead of them), else 0.
+     */
     public final int waitForClients;
     /** How loaded clients get their events ({@code dlcDelivery}). */
     public enum Delivery {
@@ -115,7 +118,8 @@ public final class ServerConfig {
         snapshotFileName = r.string("snapshotFileName");
         snapshotInterval = r.real("snapshotInterval", 0.0, 0.0, Double.POSITIVE_INFINITY);
         robotsInteract = r.bool(true, "robotsInteract");
-        waitForClients = r.integer("waitForClients", enableNetworkClients && !dlcEnabled ? 1 : 0, 0, Integer.MAX_VALUE);
+        waitForClients = r.integer("waitForClients", lockstep && enableNetworkClients && !dlcEnabled ? 1 : 0, 0,
+                Integer.MAX_VALUE);
         dlcDelivery = Delivery.valueOf(r.choice("dlcDelivery", "auto", "auto", "direct", "pipes").toUpperCase(Locale.ROOT));
         recordFileName = r.string("recordFileName");
         eventLogFileName = r.string("eventLogFileName");
@@ -137,6 +141,12 @@ public final class ServerConfig {
         }
         if (floorPlanFileName == null) {
             throw new ConfigException(where + "the floor plan is missing: give floorPlanFileName or -f PLAN");
+        }
+        int loaded = dlcEnabled ? dlcNames.size() : 0;
+        if (!enableNetworkClients && waitForClients > loaded) {
+            String clients = loaded == 0 ? "no client is" : "only " + loaded + (loaded == 1 ? " client is" : " clients are");
+            throw new ConfigException(where + "waitForClients=" + waitForClients + " can never be met: network clients "
+                    + "are disabled (enableNetworkClients=false) and " + clients + " loaded (dlcName), each with one robot");
         }
         if (lockstep && !interlockEnabled) {
             throw new ConfigException(where + "simulationSpeed=max needs interlockEnabled=true "

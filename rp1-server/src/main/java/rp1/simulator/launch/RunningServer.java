@@ -20,7 +20,8 @@ import rp1.simulator.record.RunRecords;
  * returns, a writer for a client that falls behind; behavior.md section 3.2, docs/architecture.md)
  * are running. It stops when asked ({@link #stop()},
  * Ctrl-C through {@code rp1.Server}'s shutdown hook, the view's exit), at {@code maxSimulationTime},
- * when every loaded client is done ({@code exitWhenClientsDone}), or when a loaded client fails to
+ * when every loaded client is done ({@code exitWhenClientsDone}), when a max-speed run has nobody
+ * left ({@link #NOBODY_LEFT}), or when a loaded client fails to
  * initialize. Stopping closes every client, stops the scheduler, finishes the recording and event log
  * (if any) and flushes and closes the log; the exit status says how it ended ({@link ExitStatus}),
  * {@link ExitStatus#OUTPUT_FAILED} if it ended as asked but its recording, event log or a picture
@@ -29,6 +30,9 @@ import rp1.simulator.record.RunRecords;
 public final class RunningServer {
     /** How long stopping waits for the scheduler to finish the task it is running. */
     private static final long SCHEDULER_JOIN_MILLIS = 5000;
+
+    /** The stop reason of a max-speed run that every client and robot has left ({@link #endWhenDeserted}). */
+    public static final String NOBODY_LEFT = "nobody-left";
 
     private final Parts parts;
     private final Thread scheduler;
@@ -97,6 +101,7 @@ public final class RunningServer {
         parts.log.log("modelingFrameInterval (sec): " + c.modelingInterval);
         scheduler.start();
         scheduleMaxTime();
+        endWhenDeserted();
         if (parts.listener != null) {
             parts.listener.start();
         }
@@ -122,6 +127,28 @@ public final class RunningServer {
         parts.simulation.stopAt(max, () -> {
             parts.log.log("maxSimulationTime " + max + " s reached");
             requestStop(ExitStatus.OK, "max-simulation-time");
+        });
+    }
+
+    /**
+     * At {@code simulationSpeed=max} time cannot pass without a robot on the floor. When every client
+     * has left and no robot is left, the run ends, unless a client may still come and nothing else
+     * would end it (network clients and no time limit: the server waits, as it waits for its first
+     * client) or loaded clients end it ({@code exitWhenClientsDone}).
+     */
+    private void endWhenDeserted() {
+        ServerConfig c = parts.config;
+        boolean timeLimit = !Double.isInfinite(c.maxSimulationTime);
+        if (!c.lockstep || c.exitWhenClientsDone || (c.enableNetworkClients && !timeLimit)) {
+            return;
+        }
+        String why = timeLimit ? "maxSimulationTime (" + c.maxSimulationTime + " s) can never be reached"
+                : "network clients are disabled, so nothing more can happen";
+        parts.simulation.whenDeserted(() -> {
+            parts.simulation.shutdown();
+            parts.log.log("No robot is left and no client is connected: at simulationSpeed=max simulated time stands "
+                    + "still and " + why + "; the run ends here");
+            requestStop(ExitStatus.OK, NOBODY_LEFT);
         });
     }
 
@@ -210,6 +237,7 @@ public final class RunningServer {
 
     /**
      * Why the server stopped (or is stopping): {@code max-simulation-time}, {@code clients-done},
+     * {@code nobody-left} (a max-speed run whose clients and robots have all left),
      * {@code client failed: WHAT}, or {@code stopped} (asked to: the window, a signal, a caller);
      * {@code running} before that.
      */

@@ -1,7 +1,10 @@
 package rp1.simulator.scheduler;
 
 import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Set;
 
 import rp1.rossum.RsInterlock;
 
@@ -13,12 +16,25 @@ import rp1.rossum.RsInterlock;
  * <p>With several clients this keeps one outstanding number per client and restarts the clock only
  * when every client has acknowledged the newest event it was sent (RP1 0.60 restarted it on the
  * newest number overall, letting time run while another client was still busy). With one client the
- * two rules are the same. A client that leaves releases whatever it still held. Clients whose handlers
- * the simulation calls directly need no interlock: the call returning is the acknowledgement.
+ * two rules are the same. Clients whose handlers the simulation calls directly need no interlock: the
+ * call returning is the acknowledgement.
+ *
+ * <p><b>A client that leaves</b> ({@link #leave}) leaves at the first moment the clock would wait for
+ * it, whenever its connection happens to end: if it owes an acknowledgement, at once (the clock was
+ * waiting for it); if it owes nothing, when it is next sent an event ({@link #sending}), or when
+ * nothing else can run. So its robot leaves at the same point of the run however fast its connection
+ * went down (behavior.md section 3.5).
  */
 public final class Interlock {
     private final Scheduler scheduler;
+    /** Each client's newest number not yet acknowledged. */
     private final Map<Object, Integer> pending = new HashMap<>();
+    /** The number {@link #sending} gave the event a client's connection is about to write. */
+    private final Map<Object, Integer> numbered = new HashMap<>();
+    /** Clients whose connection has ended. */
+    private final Set<Object> ended = new HashSet<>();
+    /** Departures of clients that left owing nothing, waiting for the moment the clock would wait for them. */
+    private final Map<Object, Runnable> deferred = new LinkedHashMap<>();
     private int counter;
 
     /** An interlock on {@code scheduler}'s clock. */
@@ -36,7 +52,7 @@ public final class Interlock {
         return new RsInterlock() {
             @Override
             public int openInterlock() {
-                return open(client);
+                return numberFor(client);
             }
 
             @Override
@@ -53,6 +69,36 @@ public final class Interlock {
                 return getCounter();
             }
         };
+    }
+
+    /**
+     * An event is about to go to {@code client} (on the thread running tasks, before its connection
+     * writes it): the clock stops until the client acknowledges it, and the event gets the next number.
+     * If the client's connection has already ended, this is the first moment the clock would wait for
+     * it: its departure, if still waiting, is handed over now (applied at the next boundary) and the
+     * clock does not stop.
+     *
+     * @return whether the event is to be written (false: the client has left)
+     */
+    public synchronized boolean sending(Object client) {
+        counter++;
+        if (ended.contains(client)) {
+            Runnable departure = deferred.remove(client);
+            if (departure != null) {
+                departure.run();
+            }
+            return false;
+        }
+        scheduler.stopClock();
+        pending.put(client, counter);
+        numbered.put(client, counter);
+        return true;
+    }
+
+    /** The number of the event {@code client}'s connection writes: the one {@link #sending} gave it, or a new one. */
+    private synchronized int numberFor(Object client) {
+        Integer n = numbered.remove(client);
+        return n != null ? n : open(client);
     }
 
     /** An event is going to {@code client}: stop the clock and return its interlock number. */
@@ -79,12 +125,40 @@ public final class Interlock {
     }
 
     /**
-     * {@code client} left: whatever it held is released.
+     * {@code client}'s connection ended (any thread). If the clock waits for it, {@code departure} (which
+     * queues the client's departure as an input) runs now, before the clock is released, so the
+     * departure is applied before any further task. Otherwise it runs at the first moment the clock
+     * would wait for the client: when the client is next sent an event, or when nothing else can run,
+     * whichever comes first.
      *
      * @return whether the clock was restarted
      */
-    public synchronized boolean release(Object client) {
-        return pending.remove(client) != null && restartIfNonePending();
+    public synchronized boolean leave(Object client, Runnable departure) {
+        ended.add(client);
+        numbered.remove(client);
+        if (pending.remove(client) != null) {
+            departure.run();
+            return restartIfNonePending();
+        }
+        deferred.put(client, departure);
+        scheduler.whenIdle(this::departIdle);
+        return false;
+    }
+
+    /** Nothing else can run: the departures still waiting are handed over. */
+    private synchronized void departIdle() {
+        for (Runnable departure : deferred.values()) {
+            departure.run();
+        }
+        deferred.clear();
+    }
+
+    /** {@code client}'s departure has been applied: nothing about it is kept. */
+    public synchronized void forget(Object client) {
+        ended.remove(client);
+        pending.remove(client);
+        numbered.remove(client);
+        deferred.remove(client);
     }
 
     private boolean restartIfNonePending() {

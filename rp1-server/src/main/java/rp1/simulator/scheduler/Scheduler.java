@@ -58,6 +58,8 @@ public final class Scheduler {
     private final Condition workAvailable = lock.newCondition();
     private final ArrayDeque<Entry> immediate = new ArrayDeque<>();
     private final PriorityQueue<Entry> timed = new PriorityQueue<>();
+    /** What waits until nothing else can run ({@link #whenIdle}). */
+    private final ArrayDeque<Runnable> idleActions = new ArrayDeque<>();
     private Boundary boundary;
     private Consumer<RuntimeException> failureHandler = e -> {
         throw e;
@@ -270,6 +272,20 @@ public final class Scheduler {
         }
     }
 
+    /**
+     * Whether nothing runs and nothing could run now without something new: no thread holds the right
+     * to run tasks, no input waits and no queued task is due (it lies beyond a held or paced clock, or
+     * the interlock has stopped the clock). With a task queued, an idle lockstep clock is held.
+     */
+    public boolean isIdle() {
+        lock.lock();
+        try {
+            return executor == null && !hasWork();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** Time may not advance until {@link #release()}; tasks and inputs due now still run. */
     public void hold() {
         lock.lock();
@@ -301,6 +317,22 @@ public final class Scheduler {
         try {
             inputsPending = true;
             inputsWhileStopped |= clock.isStopped();
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Runs {@code action} on the thread running tasks at the first boundary at which nothing else can
+     * run: no task may run now, no input is waiting and the interlock does not hold the clock. That
+     * point of the task sequence does not depend on when {@code action} was handed over, as long as it
+     * was before it (the interlock's departures of clients that owe nothing wait for it). Any thread.
+     */
+    public void whenIdle(Runnable action) {
+        lock.lock();
+        try {
+            idleActions.addLast(action);
             signalIfIdle();
         } finally {
             lock.unlock();
@@ -472,6 +504,7 @@ public final class Scheduler {
     private Step step() {
         Entry e;
         double boundaryTime;
+        Runnable idle = null;
         lock.lock();
         try {
             if (shutDown || clock.isStopped()) {
@@ -485,12 +518,19 @@ public final class Scheduler {
             } else {
                 e = clock.isBegun() ? takeDue() : null;
                 if (e == null) {
-                    return Step.NONE;
+                    idle = idleActions.pollFirst();
+                    if (idle == null) {
+                        return Step.NONE;
+                    }
                 }
                 boundaryTime = 0.0;
             }
         } finally {
             lock.unlock();
+        }
+        if (idle != null) {
+            idle.run();
+            return Step.BOUNDARY;
         }
         if (e == null) {
             boundary.cross(boundaryTime);
@@ -512,7 +552,7 @@ public final class Scheduler {
         if (shutDown || clock.isStopped()) {
             return false;
         }
-        if (inputsPending && boundary != null) {
+        if ((inputsPending && boundary != null) || !idleActions.isEmpty()) {
             return true;
         }
         if (!clock.isBegun()) {

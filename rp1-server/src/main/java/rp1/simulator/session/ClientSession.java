@@ -2,6 +2,7 @@ package rp1.simulator.session;
 
 import java.util.HashSet;
 import java.util.Set;
+import java.util.function.BooleanSupplier;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsConnection;
@@ -101,6 +102,7 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     private Heartbeats.Beat heartbeat;
     private Runnable onDeparture = () -> { };
     private volatile Runnable afterSubmit = () -> { };
+    private volatile BooleanSupplier mayWrite = () -> true;
 
     /**
      * A session for the client numbered {@code number} (1, 2, ... in the order clients joined) on
@@ -162,6 +164,14 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         afterSubmit = action;
     }
 
+    /**
+     * Asked on the thread running tasks before each event is written to the client (the interlock
+     * numbers it there); false: the client has left and the event is not written.
+     */
+    public void setWriteGate(BooleanSupplier gate) {
+        mayWrite = gate;
+    }
+
     /** Run once, on the thread running tasks, when the client's departure has been applied. */
     public void setDepartureListener(Runnable listener) {
         onDeparture = listener;
@@ -178,6 +188,11 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     /** The connection ended: the client's departure is queued like its requests. Any thread. */
     public void connectionClosed() {
         submit(new Request.Departure());
+    }
+
+    /** Queues the client's departure without running what follows a submission; any thread. */
+    public void queueDeparture() {
+        host.submit(this, new Request.Departure());
     }
 
     @Override
@@ -264,7 +279,9 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     public void send(RsEvent event) {
         if (!departed) {
             host.eventOut(this, event, true);
-            connection.sendEvent(event);
+            if (mayWrite.getAsBoolean()) {
+                connection.sendEvent(event);
+            }
         }
     }
 

@@ -95,6 +95,27 @@ class ServerConfigTest {
     }
 
     @Test
+    void waitForClientsIsOneByDefaultOnlyAtMaxSpeedWithNetworkClientsAndNoLoadedClient() throws Exception {
+        String max = "floorPlanFileName=x\nsimulationSpeed=max\ninterlockEnabled=true\n";
+        assertEquals(1, config(max).waitForClients);
+        assertEquals(0, config("floorPlanFileName=x\n").waitForClients,
+                "a paced clock: a client may ask for a timeout first");
+        assertEquals(0, config(max + "dlcEnabled=true\ndlcName=a.B\n").waitForClients);
+        assertEquals(0, config(max + "dlcEnabled=true\ndlcName=a.B\nenableNetworkClients=false\n").waitForClients);
+        assertEquals(2, config(max + "dlcEnabled=true\ndlcName=a.B,c.D\nenableNetworkClients=false\nwaitForClients=2\n")
+                .waitForClients);
+    }
+
+    @Test
+    void aWaitForClientsThatCanNeverBeMetIsRefused() {
+        assertMessage("enableNetworkClients=false\nwaitForClients=1\n", "waitForClients=1 can never be met: network "
+                + "clients are disabled (enableNetworkClients=false) and no client is loaded (dlcName)");
+        assertMessage("enableNetworkClients=false\ndlcEnabled=true\ndlcName=a.B\nwaitForClients=2\n",
+                "waitForClients=2 can never be met: network clients are disabled (enableNetworkClients=false) and "
+                        + "only 1 client is loaded (dlcName)");
+    }
+
+    @Test
     void theFloorPlanIsRequiredUnlessGivenOnTheCommandLine() throws Exception {
         ConfigException e = assertThrows(ConfigException.class, () -> config("port=7758\n"));
         assertTrue(e.getMessage().contains("the floor plan is missing"), e.getMessage());

@@ -2,7 +2,9 @@ package rp1.simulator.launch;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
 
 import java.nio.file.Path;
 import java.util.OptionalInt;
@@ -14,12 +16,15 @@ import org.junit.jupiter.api.io.TempDir;
 
 import rp1.rossum.event.RsHeartbeatEvent;
 import rp1.rossum.event.RsPlacementEvent;
+import rp1.simulator.Simulation;
+import rp1.simulator.scheduler.Scheduler;
 
 /**
- * A world waits for its robots: at {@code simulationSpeed=max} simulated time stands still while no
- * robot is on the floor, and {@code waitForClients=N} holds it at 0 until N robots are placed (by
- * default 1 when network clients are enabled and no client is loaded). Before, a max-speed server
- * with a time limit ran to the end before anybody had connected.
+ * A world waits for its robots: {@code waitForClients=N} holds simulated time at 0 until N robots are
+ * placed, by default 1 at {@code simulationSpeed=max} with network clients and no loaded client (a
+ * lockstep clock would otherwise run to its time limit before anybody connected) and 0 otherwise, so a
+ * 0.60 client may ask for a timeout before it places a robot; and at {@code max} time stands still
+ * while no robot is on the floor. A number that can never be met stops the server at start-up.
  */
 @Timeout(60)
 class WaitForClientsTest {
@@ -31,10 +36,11 @@ class WaitForClientsTest {
         RunningServer server = TestServer.start(dir, "simulationSpeed=max", "interlockEnabled=true",
                 "maxSimulationTime=5");
         try {
-            assertEquals(1, server.getConfig().waitForClients, "the default with network clients only");
-            assertEquals(OptionalInt.empty(), server.awaitExit(300, TimeUnit.MILLISECONDS), "still waiting for a robot");
+            assertEquals(1, server.getConfig().waitForClients, "the default at max with network clients only");
             TcpRobot robot = TcpRobot.connect(server.getPort(), "late").startLoop();
             robot.sendHeartbeatRequest(1.0);
+            assertTimeStandsStillAtZero(server, 1.0);
+            assertFalse(server.hasExited());
             robot.sendPlacementRequest(TestServer.placementName(1));
             assertEquals(OptionalInt.of(ExitStatus.OK), server.awaitExit(20, TimeUnit.SECONDS));
             assertEquals(5, robot.events(RsHeartbeatEvent.class).size(), "beats 1 to 5, the last at the time limit");
@@ -51,8 +57,7 @@ class WaitForClientsTest {
             first.sendHeartbeatRequest(0.5);
             first.sendPlacementRequest(TestServer.placementName(1));
             first.await(RsPlacementEvent.class, e -> e.valid);
-            Thread.sleep(300);
-            assertTrue(first.events(RsHeartbeatEvent.class).isEmpty(), "30 simulated seconds would have passed");
+            assertTimeStandsStillAtZero(server, 0.5);
             TcpRobot second = TcpRobot.connect(server.getPort(), "second").startLoop();
             second.sendPlacementRequest(TestServer.placementName(2));
             RsHeartbeatEvent beat = first.await(RsHeartbeatEvent.class, e -> true);
@@ -71,13 +76,58 @@ class WaitForClientsTest {
         try {
             TcpRobot robot = TcpRobot.connect(server.getPort(), "unplaced").startLoop();
             robot.sendHeartbeatRequest(0.5);
-            Thread.sleep(300);
-            assertTrue(robot.events(RsHeartbeatEvent.class).isEmpty(), "no robot on the floor, no time passing");
+            assertTimeStandsStillAtZero(server, 0.5);
             robot.sendPlacementRequest(TestServer.placementName(1));
             assertEquals(0.5, robot.await(RsHeartbeatEvent.class, e -> true).simTime, 1e-9);
             robot.leave();
         } finally {
             server.stop();
         }
+    }
+
+    @Test
+    void atAPacedSpeedABodilessClientAskingForATimeoutGetsItsAnswer() throws Exception {
+        RunningServer server = TestServer.start(dir, "simulationSpeed=1");
+        try (RawClient client = RawClient.connected(server.getPort())) {
+            assertEquals(0, server.getConfig().waitForClients, "the default at a paced speed");
+            client.sendTimeout(0.05, 7);
+            RawClient.Event timeout = client.awaitEvent(RawClient.EVT_TIMEOUT);
+            assertEquals(7, timeout.value);
+            assertTrue(timeout.simTime >= 0.05, "at " + timeout.simTime);
+        } finally {
+            server.stop();
+        }
+    }
+
+    @Test
+    void aNumberOfRobotsThatCanNeverBePlacedIsAStartUpError() {
+        StartupException none = assertThrows(StartupException.class, () -> TestServer.start(dir,
+                "enableNetworkClients=false", "waitForClients=1"));
+        assertEquals(ExitStatus.STARTUP_FAILED, none.getExitStatus());
+        assertTrue(none.getMessage().contains("waitForClients=1 can never be met"), none.getMessage());
+        assertTrue(none.getMessage().contains("enableNetworkClients=false"), none.getMessage());
+        StartupException tooMany = assertThrows(StartupException.class, () -> TestServer.start(dir,
+                "enableNetworkClients=false", "dlcEnabled=true", "dlcName=" + TestDlc.class.getName() + ","
+                        + TestDlc.class.getName(), "waitForClients=3"));
+        assertTrue(tooMany.getMessage().contains("waitForClients=3 can never be met")
+                && tooMany.getMessage().contains("only 2 clients are loaded"), tooMany.getMessage());
+    }
+
+    /**
+     * Waits until the server has taken in what was sent and can run nothing more with a task queued at
+     * {@code nextTask}, and checks that simulated time is still 0: the clock is held, not merely slow.
+     */
+    private static void assertTimeStandsStillAtZero(RunningServer server, double nextTask) throws InterruptedException {
+        Simulation simulation = server.getSimulation();
+        Scheduler scheduler = simulation.getScheduler();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (!(simulation.getInputs().isSettled() && scheduler.nextTaskTime() == nextTask && scheduler.isIdle())) {
+            if (System.nanoTime() > deadline) {
+                fail("the server did not settle with a task queued at " + nextTask + "; next task at "
+                        + scheduler.nextTaskTime());
+            }
+            Thread.sleep(1);
+        }
+        assertEquals(0.0, simulation.getSimTime(), "time is held at 0 with a task queued at " + nextTask);
     }
 }

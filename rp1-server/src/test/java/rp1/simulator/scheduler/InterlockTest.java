@@ -4,6 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
+import java.util.List;
+
 import org.junit.jupiter.api.Test;
 
 /** The interlock as clients see it: every event stops the clock until it is acknowledged. */
@@ -42,11 +45,45 @@ class InterlockTest {
     }
 
     @Test
-    void aClientThatLeavesReleasesItsInterlock() {
+    void aClientThatLeavesWhileTheClockWaitsForItDepartsBeforeTheClockRunsAgain() {
+        List<String> order = new ArrayList<>();
         interlock.open("a");
-        interlock.release("a");
+        assertTrue(interlock.leave("a", () -> order.add("departure, clock running: " + scheduler.isClockRunning())));
+        assertEquals(List.of("departure, clock running: false"), order);
         assertTrue(scheduler.isClockRunning());
         assertFalse(interlock.isOpen());
+    }
+
+    @Test
+    void aClientThatLeavesOwingNothingDepartsWhenTheClockWouldNextWaitForIt() {
+        List<String> order = new ArrayList<>();
+        assertFalse(interlock.leave("a", () -> order.add("departure")));
+        assertTrue(interlock.sending("b"), "another client's event is written");
+        interlock.close("b", 1);
+        assertEquals(List.of(), order, "the clock has not waited for a yet");
+        assertFalse(interlock.sending("a"), "nothing is written to a client that has left");
+        assertEquals(List.of("departure"), order);
+        assertTrue(scheduler.isClockRunning(), "nobody will acknowledge it");
+        assertFalse(interlock.sending("a"));
+        assertEquals(List.of("departure"), order, "a departure is handed over once");
+    }
+
+    @Test
+    void aClientThatLeavesOwingNothingAndIsSentNothingDepartsWhenNothingElseCanRun() {
+        List<String> order = new ArrayList<>();
+        scheduler.schedule(1.0, Scheduler.NORMAL, t -> order.add("task at " + t));
+        interlock.leave("a", () -> order.add("departure"));
+        assertEquals(1, scheduler.runUntilIdle());
+        assertEquals(List.of("task at 1.0", "departure"), order);
+    }
+
+    @Test
+    void anEventNumberedBeforeItIsWrittenKeepsThatNumberOnTheWire() {
+        assertTrue(interlock.sending("x"));
+        assertFalse(scheduler.isClockRunning());
+        assertEquals(1, interlock.forClient("x", () -> { }).openInterlock());
+        assertEquals(1, interlock.getCounter());
+        assertTrue(interlock.close("x", 1));
     }
 
     @Test
