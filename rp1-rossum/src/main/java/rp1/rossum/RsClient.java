@@ -8,6 +8,7 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Paths;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
@@ -93,12 +94,14 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      */
     @Override
     public void initialize() throws IOException {
+        List<String> notices = new ArrayList<>();
         if (rsProperties == null) {
-            rsProperties = loadClientProperties();
+            rsProperties = loadClientProperties(notices);
         }
         if (!isLoggerSet()) {
             initiateLogger(rsProperties);
         }
+        notices.forEach(this::report);
         if (!isInputSet() && link == null) {
             initiateConnection(rsProperties);
         }
@@ -113,19 +116,20 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /**
      * The library defaults, then {@code rossum.ini} from the working directory or, if there is none,
      * from next to this object's class. Having neither is normal (the defaults serve); a file that
-     * exists but is invalid is reported on standard error and the defaults stay.
+     * exists but is invalid leaves the defaults. What happened is added to {@code notices}, for the
+     * log that the properties are about to configure.
      */
-    private RsProperties loadClientProperties() {
+    private RsProperties loadClientProperties(List<String> notices) {
         RsProperties p = new RsProperties();
         try {
             if (Files.isRegularFile(Paths.get(RsProperties.FILE_NAME))) {
                 p.loadFromFile(RsProperties.FILE_NAME);
-                System.err.println("RsClient properties loaded from local file " + RsProperties.FILE_NAME);
+                notices.add("RsClient properties loaded from local file " + RsProperties.FILE_NAME);
             } else if (getClass().getResource(RsProperties.FILE_NAME) != null) {
                 p.loadFromResource(this, RsProperties.FILE_NAME);
             }
         } catch (RsPropertiesException e) {
-            System.err.println("RsClient: " + e.getMessage() + "; using defaults");
+            notices.add("RsClient: " + e.getMessage() + "; using defaults");
         }
         return p;
     }
@@ -366,10 +370,9 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         return Objects.requireNonNull(sensor, "sensor").getID();
     }
 
+    /** RP1 0.60 threw {@code Error} here; a null argument is a {@code NullPointerException} naming it (docs/differences.md). */
     private static void requireHandler(RsEventHandler h) {
-        if (h == null) {
-            throw new Error("RsClient: attempt to register a null event handler");
-        }
+        Objects.requireNonNull(h, "handler");
     }
 
     /** Events that need no subscription (answers to requests, always delivered): only the handler is stored. */
@@ -767,6 +770,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         shutdown();
     }
 
+    /** In the client's log; on standard error only when the client has no log at all. */
     private void report(String message) {
         if (logger != null) {
             logIt("X", message);
