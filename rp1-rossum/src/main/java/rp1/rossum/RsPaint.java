@@ -13,6 +13,12 @@ public class RsPaint extends RsObject {
     protected RsPolygon polygon;
     protected int region;
 
+    /**
+     * Paint called {@code name} of {@code plan}, without a polygon yet; light grey, region 0.
+     *
+     * @param name the paint's name, or null to have the plan name it
+     * @param plan the plan it belongs to
+     */
     public RsPaint(String name, RsPlan plan) {
         super(name, plan);
         fillColor = Color.lightGray;
@@ -45,6 +51,11 @@ public class RsPaint extends RsObject {
         return region;
     }
 
+    /**
+     * Sets the region code paint sensors report over this paint.
+     *
+     * @param region the code
+     */
     public void setRegion(int region) {
         this.region = region;
     }

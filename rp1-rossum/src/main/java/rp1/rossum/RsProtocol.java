@@ -95,6 +95,7 @@ public class RsProtocol implements RsLogInterface {
     private InputStream rawInput;
     private OutputStream rawOutput;
 
+    /** A session without streams yet. */
     public RsProtocol() {
     }
 
@@ -120,10 +121,20 @@ public class RsProtocol implements RsLogInterface {
         }
     }
 
+    /**
+     * Whether an input stream is set (and the session not shut down).
+     *
+     * @return whether messages can be read
+     */
     public boolean isInputSet() {
         return input != null;
     }
 
+    /**
+     * Whether an output stream is set (and the session not shut down).
+     *
+     * @return whether messages can be written
+     */
     public boolean isOutputSet() {
         return output != null;
     }

@@ -31,10 +31,20 @@ public abstract class RsUnits {
         return resolve(value, userResolution);
     }
 
+    /**
+     * Sets the step {@link #resolveUserCoordinate} rounds to; 0 (or less) for none.
+     *
+     * @param resolution the step in these units
+     */
     public void setUserResolution(double resolution) {
         userResolution = Math.max(0.0, resolution);
     }
 
+    /**
+     * The step {@link #resolveUserCoordinate} rounds to.
+     *
+     * @return the step in these units, 0 for none
+     */
     public double getUserResolution() {
         return userResolution;
     }
@@ -44,10 +54,20 @@ public abstract class RsUnits {
         return resolve(value, internalResolution);
     }
 
+    /**
+     * Sets the step {@link #resolveInternalCoordinate} rounds to; 0 (or less) for none.
+     *
+     * @param resolution the step in metres
+     */
     public void setInternalResolution(double resolution) {
         internalResolution = Math.max(0.0, resolution);
     }
 
+    /**
+     * The step {@link #resolveInternalCoordinate} rounds to.
+     *
+     * @return the step in metres, 0 for none
+     */
     public double getInternalResolution() {
         return internalResolution;
     }

@@ -18,6 +18,12 @@ public class RsWall extends RsObject {
     protected RsSegment[] segmentArray;
     protected RsPolygon polygon;
 
+    /**
+     * A wall (or obstacle) called {@code name} of {@code plan}, without geometry yet.
+     *
+     * @param name the wall's name, or null to have the plan name it
+     * @param plan the plan it belongs to
+     */
     public RsWall(String name, RsPlan plan) {
         super(name, plan);
         fillColor = Color.lightGray;
