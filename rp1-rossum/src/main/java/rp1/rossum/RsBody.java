@@ -21,6 +21,7 @@ public class RsBody extends RsComponent {
 
     private static int lastBodyID;
 
+    /** The body's name, sent with the body specification. */
     public String name;
     /** The wheel system added with {@link #addPart}, or null. */
     public RsWheelSystem wheelSystem;

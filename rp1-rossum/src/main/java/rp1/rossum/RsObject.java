@@ -13,6 +13,7 @@ public abstract class RsObject {
     public boolean isGeometrySet;
     /** The plan this object belongs to. */
     public RsPlan plan;
+    /** Whether the object is selected ({@link #getSelected()}). */
     protected boolean selected = true;
     /** The colour the object is filled with when drawn. */
     public Color fillColor;

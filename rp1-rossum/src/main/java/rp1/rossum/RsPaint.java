@@ -9,8 +9,11 @@ import java.util.Arrays;
  * does not block motion or sensors. Where paint overlaps, the one declared last lies on top.
  */
 public class RsPaint extends RsObject {
+    /** The polygon's edges; null without geometry. */
     protected RsSegment[] segmentArray;
+    /** The polygon; null without geometry. */
     protected RsPolygon polygon;
+    /** The region code paint sensors report. */
     protected int region;
 
     /**

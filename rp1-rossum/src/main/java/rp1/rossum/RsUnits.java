@@ -8,6 +8,7 @@ import java.util.Locale;
  * {@code conversionFactor[0]} is the number of user units per metre.
  */
 public abstract class RsUnits {
+    /** {@code conversionFactor[0]}: user units per metre. */
     protected double[] conversionFactor;
     private final String name;
     private double userResolution;
