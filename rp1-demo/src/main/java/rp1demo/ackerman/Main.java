@@ -14,10 +14,11 @@ import rp1.rossum.event.RsPositionEvent;
 import rp1demo.adapter.Poses;
 
 /**
- * The Ackerman demo's connection to the simulator (User's Guide Table 4: "the simplest demo
- * application"): the car is placed at "home" and, ten times a second, asks where it is and sets its
- * drive wheels' speed and its steering angle as the {@link CourseDriver} says, through the steering
- * system's actuator controls, until it is back near home.
+ * The Ackerman demo's connection to the simulator (docs/guide.md section 2; the original's user's
+ * guide calls its own Ackerman demo "the simplest demo application"): the car is placed at "home"
+ * and, ten times a second, asks where it is and sets its drive wheels' speed and its steering angle
+ * as the {@link CourseDriver} says, through the steering system's actuator controls, until it is
+ * back near home.
  */
 public class Main extends RsClient implements RsRunnable {
     /**

@@ -25,7 +25,7 @@ public final class Poses {
 
     /**
      * Where a detected target is in the world, from the sensor's position and line of sight that the
-     * event carries (User's Guide section 5.5.1.1). A real robot would have to work this out from its
+     * event carries (docs/protocol.md section 7.5). A real robot would have to work this out from its
      * own idea of where it is.
      *
      * @return {x, y} in metres

@@ -1,6 +1,6 @@
 /**
  * The demos' side of the simulator interface: conversions between RP1's events, plans and requests
  * and the simulator-free types of {@link rp1demo.navigation}. Keeping them here keeps the robot
- * logic free of {@code rp1.*} (User's Guide section 4.1.1).
+ * logic free of {@code rp1.*} (docs/guide.md section 2).
  */
 package rp1demo.adapter;

@@ -10,7 +10,7 @@ import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.RsDifferentialSteering;
 
 /**
- * The body plan of ClientZero (User's Guide section 4.6, Figures 8 and 9): a round chassis 0.3 m
+ * The body plan of ClientZero, as the original's user's guide draws it: a round chassis 0.3 m
  * across on two wheels, with a target sensor named "head" on its front looking straight ahead over
  * 45 degrees and 1 m. Not meant to be instantiated: {@link #build()} is all there is.
  */

@@ -10,7 +10,7 @@ import rp1.rossum.request.RsMotionRequest;
 import rp1demo.navigation.NavNetwork;
 
 /**
- * ClientZero's connection to the simulator (User's Guide section 4.3, Figure 6): it sends the body,
+ * ClientZero's connection to the simulator, as the original's user's guide writes it: it sends the body,
  * registers one handler per event and asks for the floor plan and the "home" placement. Then a left
  * click in the simulator's window sends the robot to the clicked point and any other click turns it
  * to face the point; after running into a wall it backs away a little.

@@ -12,7 +12,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /**
- * The demos' robot logic does not depend on the simulator (User's Guide section 4.1.1): these
+ * The demos' robot logic does not depend on the simulator (docs/guide.md section 2): these
  * sources import nothing from {@code rp1.*}, so they could be moved to a real robot as they are.
  */
 class SeparationTest {

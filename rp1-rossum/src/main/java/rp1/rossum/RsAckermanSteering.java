@@ -22,10 +22,15 @@ public class RsAckermanSteering extends RsWheelSystem {
 
     /** Central steering limit, radians. */
     protected double maxAbsSteeringAngle;
+    /**
+     * Smallest turning radius of the body origin, metres, from the inner wheel's steering limit.
+     */
     protected double minTurnRadius;
+    /** Whether the rear wheels steer too. */
     protected boolean dualSteering;
     /** The central steering angle the wheels are drawn at, radians. */
     protected double depictionSteeringAngle;
+    /** Whether {@link #addDefaultWheels} has added the four drawn wheels. */
     protected boolean defaultWheelsAdded;
 
     /**

@@ -10,7 +10,9 @@ import java.util.ArrayList;
 public class RsActuator extends RsBodyPart {
     private static final long serialVersionUID = 1L;
 
+    /** The sub-parts, in the order added (a copy of {@link #partsList}). */
     protected RsBodyPart[] partsArray = new RsBodyPart[0];
+    /** The sub-parts, in the order added. */
     protected ArrayList<RsBodyPart> partsList = new ArrayList<>();
 
     /** An actuator without sub-parts, named "Actuator". */

@@ -19,6 +19,7 @@ import rp1.rossum.request.RsMotionRequest;
 public class RsBody extends RsComponent {
     private static final long serialVersionUID = 1L;
 
+    /** The body's name, sent with the body specification. */
     public String name;
     /** The wheel system added with {@link #addPart}, or null. */
     public RsWheelSystem wheelSystem;

@@ -11,8 +11,11 @@ import java.awt.Graphics;
 public class RsBodyCircle extends RsBodyShape {
     private static final long serialVersionUID = 1L;
 
+    /** Centre, body coordinates, metres. */
     protected double refXCenter;
+    /** Centre, body coordinates, metres. */
     protected double refYCenter;
+    /** Radius, metres. */
     protected double refRadius;
 
     /** A circle centred on (xCenter, yCenter) in body coordinates. */

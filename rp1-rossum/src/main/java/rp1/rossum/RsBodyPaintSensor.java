@@ -13,9 +13,13 @@ import rp1.rossum.event.RsSensorEvent;
 public class RsBodyPaintSensor extends RsBodySensor {
     private static final long serialVersionUID = 1L;
 
+    /** Detector point, body coordinates, metres. */
     protected double xDetector;
+    /** Detector point, body coordinates, metres. */
     protected double yDetector;
+    /** Detector point in world coordinates at the last reading. */
     protected RsPoint mappedPos;
+    /** Region code of the paint under the detector at the last reading; 0 for none. */
     protected int region;
     /** Region codes the sensor is sensitive to; null = every region. */
     protected int[] regionSensitivity;

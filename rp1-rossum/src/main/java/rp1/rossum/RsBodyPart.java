@@ -30,13 +30,21 @@ public abstract class RsBodyPart extends RsComponent {
      */
     private static final AtomicLong CONSTRUCTED = new AtomicLong();
 
+    /** The part's name ({@link #getName()}). */
     protected String name = "Unnamed";
+    /** Bounding box in body coordinates. */
     protected RsRectangle refBounds = new RsRectangle();
+    /** Bounding box in world coordinates at the last pose computed. */
     protected RsRectangle bounds = new RsRectangle();
+    /** Whether the part is hot: a sensor detecting something, a painter painting. */
     protected boolean hot;
+    /** Fill colour; null means "not filled". */
     protected Color fillColor = DEFAULT_COLOR;
+    /** Line colour; null means "not drawn". */
     protected Color lineColor = DEFAULT_COLOR;
+    /** Fill colour while hot. */
     protected Color hotFillColor = DEFAULT_HOT_COLOR;
+    /** Line colour while hot. */
     protected Color hotLineColor = DEFAULT_HOT_COLOR;
 
     private final long constructed = CONSTRUCTED.incrementAndGet();

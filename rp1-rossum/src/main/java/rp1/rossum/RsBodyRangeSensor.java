@@ -15,19 +15,28 @@ public class RsBodyRangeSensor extends RsBodySensor {
     /** Larger maximum ranges are reduced to this (metres). */
     static final double MAX_MAX_RANGE = 1.0e6;
 
+    /** Detector point, body coordinates, metres. */
     protected double xDetector;
+    /** Detector point, body coordinates, metres. */
     protected double yDetector;
+    /** Sight direction relative to the heading, radians. */
     protected double sightAngle;
+    /** Maximum range, metres. */
     protected double maxRange;
+    /** Number of range bins up to the maximum range. */
     protected int nRangeBin;
     /**
      * Line-of-sight vector. RP1 0.60 never stores it, so events carry ux = uy = 0; these stay 0 for
      * the same reason.
      */
     protected double vx;
+    /** Line-of-sight vector; see {@link #vx}. */
     protected double vy;
+    /** Distance to the wall seen at the last reading, metres; 0 when none is. */
     protected double range;
+    /** Detector point in world coordinates at the last reading. */
     protected RsPoint mappedPos;
+    /** Range bin of the last reading; -1 before the first. */
     protected int rBin = -1;
     /** Plan objects are not serializable; a copied sensor keeps only {@link #objectName}. */
     protected transient RsObject objectDetected;

@@ -15,7 +15,9 @@ public abstract class RsBodySensor extends RsBodyShape {
     /** Red, the default hot line colour of sensors. */
     static final Color DEFAULT_HOT_LINE_COLOR = new Color(255, 0, 0);
 
+    /** Whether the last reading changed the sensor's state (an event is due). */
     protected boolean stateChange;
+    /** Simulation time of the last reading, seconds. */
     protected double timeStateComputed;
 
     /** A sensor with the given outline (see {@link RsBodyShape#RsBodyShape(double[], int)}). */

@@ -20,23 +20,43 @@ public class RsBodyTargetSensor extends RsBodySensor {
     /** Closer than this (metres) the target counts as at the detector. */
     private static final double COINCIDENT = 1.0e-6;
 
+    /** Detector point, body coordinates, metres. */
     protected double xDetector;
+    /** Detector point, body coordinates, metres. */
     protected double yDetector;
+    /** Sight angle from the heading, radians (applied twice, see the class comment). */
     protected double sightAngle;
+    /** Width of the field of view, radians; 0 sees all round. */
     protected double width;
+    /** Maximum range, metres. */
     protected double maxRange;
+    /** Number of bearing bins across the field of view. */
     protected int nWidthBin;
+    /** Number of range bins up to the maximum range. */
     protected int nRangeBin;
+    /** Half the field of view, radians. */
     protected double halfWidth;
+    /** Cosine of {@link #halfWidth}, for the field-of-view test. */
     protected double cosHalfWidth;
+    /** Unit vector of the line of sight, world coordinates, at the last reading. */
     protected double vx;
+    /** Unit vector of the line of sight, world coordinates, at the last reading. */
     protected double vy;
+    /** Target position along the line of sight at the last reading, metres; 0 when none is seen. */
     protected double xTarget;
+    /**
+     * Target position across the line of sight at the last reading, metres; 0 when none is seen.
+     */
     protected double yTarget;
+    /** Distance to the target at the last reading, metres; 0 when none is seen. */
     protected double range;
+    /** Bearing of the target at the last reading, radians; 0 when none is seen. */
     protected double bearing;
+    /** Detector point in world coordinates at the last reading. */
     protected RsPoint mappedPos;
+    /** Range bin of the last reading. */
     protected int rBin;
+    /** Bearing bin of the last reading. */
     protected int wBin;
     /** Plan objects are not serializable; a copied sensor keeps only {@link #targetName}. */
     protected transient RsTarget targetDetected;

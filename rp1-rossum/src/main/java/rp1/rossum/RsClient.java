@@ -8,6 +8,7 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Paths;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
@@ -64,8 +65,20 @@ import rp1.rossum.request.RsTargetSelectionRequest;
  * interlock enabled, the acknowledgement of an event is sent after its last handler has returned,
  * so the simulation clock stands still while the handlers work. A client connected directly to a
  * server in the same process ({@link RsConnection#connectDirect}) has no event loop: its handlers run
- * on the server's thread that sends each event, which waits for them. The {@code send...} methods
- * may be called from any thread.
+ * on the server's thread that sends each event, which waits for them.
+ *
+ * <p>Handlers are added and removed from any thread, a running handler included (dispatch works on
+ * a copy, so the change applies from the next event). Seven kinds of event are sent only to a client
+ * that subscribed to them: mouse clicks, motion started, motion halted and each sensor's state
+ * changes. The first {@code add...} handler of such a kind (for a sensor: of that sensor) subscribes,
+ * every {@code remove...} unsubscribes; a handler added before the client is connected (for a client
+ * that connects itself: before {@link #initialize()}) never subscribes (docs/protocol.md section 10).
+ * Handlers of the other kinds receive the answers to this client's requests and need no subscription.
+ *
+ * <p>The {@code send...} methods may be called from any thread, handlers included; each sends one
+ * whole message. Before the client is connected they throw {@link IllegalStateException}; after the
+ * session has ended they do nothing but write a verbose log line. They hold this object's monitor
+ * while writing, so while a server is not reading, a sender waits and so do the other senders.
  */
 public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /** The configuration {@link #initialize()} uses; created there if still null. */
@@ -81,6 +94,10 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     private int bodiesSent;
     private int encoderRequestIndex;
 
+    /**
+     * A client not yet connected: {@link #initialize()} connects it, unless a server that loads it
+     * in-process gives it its streams or a direct link first.
+     */
     public RsClient() {
     }
 
@@ -95,12 +112,14 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      */
     @Override
     public void initialize() throws IOException {
+        List<String> notices = new ArrayList<>();
         if (rsProperties == null) {
-            rsProperties = loadClientProperties();
+            rsProperties = loadClientProperties(notices);
         }
         if (!isLoggerSet()) {
             initiateLogger(rsProperties);
         }
+        notices.forEach(this::report);
         if (!isInputSet() && link == null) {
             initiateConnection(rsProperties);
         }
@@ -115,19 +134,20 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /**
      * The library defaults, then {@code rossum.ini} from the working directory or, if there is none,
      * from next to this object's class. Having neither is normal (the defaults serve); a file that
-     * exists but is invalid is reported on standard error and the defaults stay.
+     * exists but is invalid leaves the defaults. What happened is added to {@code notices}, for the
+     * log that the properties are about to configure.
      */
-    private RsProperties loadClientProperties() {
+    private RsProperties loadClientProperties(List<String> notices) {
         RsProperties p = new RsProperties();
         try {
             if (Files.isRegularFile(Paths.get(RsProperties.FILE_NAME))) {
                 p.loadFromFile(RsProperties.FILE_NAME);
-                System.err.println("RsClient properties loaded from local file " + RsProperties.FILE_NAME);
+                notices.add("RsClient properties loaded from local file " + RsProperties.FILE_NAME);
             } else if (getClass().getResource(RsProperties.FILE_NAME) != null) {
                 p.loadFromResource(this, RsProperties.FILE_NAME);
             }
         } catch (RsPropertiesException e) {
-            System.err.println("RsClient: " + e.getMessage() + "; using defaults");
+            notices.add("RsClient: " + e.getMessage() + "; using defaults");
         }
         return p;
     }
@@ -160,6 +180,12 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         log("Connected to RP1 server at " + p.hostName + ":" + p.port);
     }
 
+    /**
+     * The properties {@link #initialize()} uses ({@link #rsProperties}): null before it unless they
+     * were set.
+     *
+     * @return the properties, or null
+     */
     public RsProperties getProperties() {
         return rsProperties;
     }
@@ -192,34 +218,98 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     // Handler registration. The seven simulation-generated event types are subscribed when their
     // first handler for a key is added and unsubscribed on every removal, as RP1 0.60 does.
 
+    /**
+     * Adds {@code h} for mouse-click events (docs/protocol.md section 7.2), called after the
+     * handlers added before it. The first handler subscribes to these events (protocol.md section
+     * 10). Before the client is connected (for a client that connects itself: before {@link
+     * #initialize()}) the subscription is skipped and, the handler being stored, never sent later,
+     * so none of these events arrives. Any thread, a handler included (the change applies from the
+     * next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addMouseClickEventHandler(RsMouseClickEventHandler h) {
         addSubscribed(RsEvent.EVT_MOUSE_CLICK, 0, h);
     }
 
+    /**
+     * Removes every mouse-click handler and unsubscribes (docs/protocol.md section 10); the next
+     * add subscribes again. Any thread, a handler included (the change applies from the next
+     * event).
+     */
     public synchronized void removeMouseClickEventHandler() {
         removeSubscribed(RsEvent.EVT_MOUSE_CLICK, 0, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a mouse-click handler and unsubscribes, as RP1
+     * 0.60 did, even if other handlers remain: those receive none of these events until every
+     * handler has been removed and one is added again (docs/protocol.md section 10). Any thread, a
+     * handler included (the change applies from the next event).
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removeMouseClickEventHandler(RsMouseClickEventHandler h) {
         removeSubscribed(RsEvent.EVT_MOUSE_CLICK, 0, h);
     }
 
+    /**
+     * Adds {@code h} for motion-started events (docs/protocol.md section 7.7), called after the
+     * handlers added before it. The first handler subscribes to these events (protocol.md section
+     * 10). Before the client is connected (for a client that connects itself: before {@link
+     * #initialize()}) the subscription is skipped and, the handler being stored, never sent later,
+     * so none of these events arrives. Any thread, a handler included (the change applies from the
+     * next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addMotionStartedEventHandler(RsMotionStartedEventHandler h) {
         addSubscribed(RsEvent.EVT_MOTION_STARTED, 0, h);
     }
 
+    /**
+     * Removes every motion-started handler and unsubscribes (docs/protocol.md section 10); the next
+     * add subscribes again. Any thread, a handler included (the change applies from the next
+     * event).
+     */
     public synchronized void removeMotionStartedEventHandler() {
         removeSubscribed(RsEvent.EVT_MOTION_STARTED, 0, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a motion-started handler and unsubscribes, as RP1
+     * 0.60 did, even if other handlers remain: those receive none of these events until every
+     * handler has been removed and one is added again (docs/protocol.md section 10). Any thread, a
+     * handler included (the change applies from the next event).
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removeMotionStartedEventHandler(RsMotionStartedEventHandler h) {
         removeSubscribed(RsEvent.EVT_MOTION_STARTED, 0, h);
     }
 
+    /**
+     * Adds {@code h} for motion-halted events (docs/protocol.md section 7.8), called after the
+     * handlers added before it. The first handler subscribes to these events (protocol.md section
+     * 10). Before the client is connected (for a client that connects itself: before {@link
+     * #initialize()}) the subscription is skipped and, the handler being stored, never sent later,
+     * so none of these events arrives. Any thread, a handler included (the change applies from the
+     * next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addMotionHaltedEventHandler(RsMotionHaltedEventHandler h) {
         addSubscribed(RsEvent.EVT_MOTION_HALTED, 0, h);
     }
 
+    /**
+     * Removes every motion-halted handler and unsubscribes (docs/protocol.md section 10); the next
+     * add subscribes again. Any thread, a handler included (the change applies from the next
+     * event).
+     */
     public synchronized void removeMotionHaltedEventHandler() {
         removeSubscribed(RsEvent.EVT_MOTION_HALTED, 0, null);
     }
@@ -232,134 +322,376 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         removeSubscribed(RsEvent.EVT_MOTION_HALTED, 0, h);
     }
 
+    /**
+     * Adds {@code h} for the state changes of sensor {@code s}: target-sensor events
+     * (docs/protocol.md section 7.5), called after the handlers added before it. The first handler
+     * for this sensor subscribes to its changes (protocol.md section 10). Before the client is
+     * connected (for a client that connects itself: before {@link #initialize()}) the subscription
+     * is skipped and, the handler being stored, never sent later: then only the answers to {@link
+     * #sendSensorStatusRequest} reach it. Any thread, a handler included (the change applies from
+     * the next event).
+     *
+     * @param s the sensor, a part of the body sent
+     * @param h the handler
+     * @throws NullPointerException if {@code s} or {@code h} is null
+     */
     public synchronized void addTargetSensorEventHandler(RsBodyTargetSensor s, RsTargetSensorEventHandler h) {
         addSubscribed(RsEvent.EVT_TARGET_SENSOR, sensorId(s), h);
     }
 
+    /**
+     * Removes every target-sensor handler of sensor {@code s} and unsubscribes from its changes
+     * (docs/protocol.md section 10); the next add subscribes again. Any thread, a handler included
+     * (the change applies from the next event).
+     *
+     * @param s the sensor
+     */
     public synchronized void removeTargetSensorEventHandler(RsBodyTargetSensor s) {
         removeSubscribed(RsEvent.EVT_TARGET_SENSOR, sensorId(s), null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a target-sensor handler of sensor {@code s} and
+     * unsubscribes, as RP1 0.60 did, even if other handlers remain: those receive none of these
+     * events until every handler has been removed and one is added again (docs/protocol.md section
+     * 10). Any thread, a handler included (the change applies from the next event).
+     *
+     * @param s the sensor
+     * @param h the handler to remove
+     */
     public synchronized void removeTargetSensorEventHandler(RsBodyTargetSensor s, RsTargetSensorEventHandler h) {
         removeSubscribed(RsEvent.EVT_TARGET_SENSOR, sensorId(s), h);
     }
 
+    /**
+     * Adds {@code h} for the state changes of sensor {@code s}: contact-sensor events
+     * (docs/protocol.md section 7.1), called after the handlers added before it. The first handler
+     * for this sensor subscribes to its changes (protocol.md section 10). Before the client is
+     * connected (for a client that connects itself: before {@link #initialize()}) the subscription
+     * is skipped and, the handler being stored, never sent later: then only the answers to {@link
+     * #sendSensorStatusRequest} reach it. Any thread, a handler included (the change applies from
+     * the next event).
+     *
+     * @param s the sensor, a part of the body sent
+     * @param h the handler
+     * @throws NullPointerException if {@code s} or {@code h} is null
+     */
     public synchronized void addContactSensorEventHandler(RsBodyContactSensor s, RsContactSensorEventHandler h) {
         addSubscribed(RsEvent.EVT_CONTACT_SENSOR, sensorId(s), h);
     }
 
+    /**
+     * Removes every contact-sensor handler of sensor {@code s} and unsubscribes from its changes
+     * (docs/protocol.md section 10); the next add subscribes again. Any thread, a handler included
+     * (the change applies from the next event).
+     *
+     * @param s the sensor
+     */
     public synchronized void removeContactSensorEventHandler(RsBodyContactSensor s) {
         removeSubscribed(RsEvent.EVT_CONTACT_SENSOR, sensorId(s), null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a contact-sensor handler of sensor {@code s} and
+     * unsubscribes, as RP1 0.60 did, even if other handlers remain: those receive none of these
+     * events until every handler has been removed and one is added again (docs/protocol.md section
+     * 10). Any thread, a handler included (the change applies from the next event).
+     *
+     * @param s the sensor
+     * @param h the handler to remove
+     */
     public synchronized void removeContactSensorEventHandler(RsBodyContactSensor s, RsContactSensorEventHandler h) {
         removeSubscribed(RsEvent.EVT_CONTACT_SENSOR, sensorId(s), h);
     }
 
+    /**
+     * Adds {@code h} for the state changes of sensor {@code s}: range-sensor events
+     * (docs/protocol.md section 7.4), called after the handlers added before it. The first handler
+     * for this sensor subscribes to its changes (protocol.md section 10). Before the client is
+     * connected (for a client that connects itself: before {@link #initialize()}) the subscription
+     * is skipped and, the handler being stored, never sent later: then only the answers to {@link
+     * #sendSensorStatusRequest} reach it. Any thread, a handler included (the change applies from
+     * the next event).
+     *
+     * @param s the sensor, a part of the body sent
+     * @param h the handler
+     * @throws NullPointerException if {@code s} or {@code h} is null
+     */
     public synchronized void addRangeSensorEventHandler(RsBodyRangeSensor s, RsRangeSensorEventHandler h) {
         addSubscribed(RsEvent.EVT_RANGE_SENSOR, sensorId(s), h);
     }
 
+    /**
+     * Removes every range-sensor handler of sensor {@code s} and unsubscribes from its changes
+     * (docs/protocol.md section 10); the next add subscribes again. Any thread, a handler included
+     * (the change applies from the next event).
+     *
+     * @param s the sensor
+     */
     public synchronized void removeRangeSensorEventHandler(RsBodyRangeSensor s) {
         removeSubscribed(RsEvent.EVT_RANGE_SENSOR, sensorId(s), null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a range-sensor handler of sensor {@code s} and
+     * unsubscribes, as RP1 0.60 did, even if other handlers remain: those receive none of these
+     * events until every handler has been removed and one is added again (docs/protocol.md section
+     * 10). Any thread, a handler included (the change applies from the next event).
+     *
+     * @param s the sensor
+     * @param h the handler to remove
+     */
     public synchronized void removeRangeSensorEventHandler(RsBodyRangeSensor s, RsRangeSensorEventHandler h) {
         removeSubscribed(RsEvent.EVT_RANGE_SENSOR, sensorId(s), h);
     }
 
+    /**
+     * Adds {@code h} for the state changes of sensor {@code s}: paint-sensor events
+     * (docs/protocol.md section 7.12), called after the handlers added before it. The first handler
+     * for this sensor subscribes to its changes (protocol.md section 10). Before the client is
+     * connected (for a client that connects itself: before {@link #initialize()}) the subscription
+     * is skipped and, the handler being stored, never sent later: then only the answers to {@link
+     * #sendSensorStatusRequest} reach it. Any thread, a handler included (the change applies from
+     * the next event).
+     *
+     * @param s the sensor, a part of the body sent
+     * @param h the handler
+     * @throws NullPointerException if {@code s} or {@code h} is null
+     */
     public synchronized void addPaintSensorEventHandler(RsBodyPaintSensor s, RsPaintSensorEventHandler h) {
         addSubscribed(RsEvent.EVT_PAINT_SENSOR, sensorId(s), h);
     }
 
+    /**
+     * Removes every paint-sensor handler of sensor {@code s} and unsubscribes from its changes
+     * (docs/protocol.md section 10); the next add subscribes again. Any thread, a handler included
+     * (the change applies from the next event).
+     *
+     * @param s the sensor
+     */
     public synchronized void removePaintSensorEventHandler(RsBodyPaintSensor s) {
         removeSubscribed(RsEvent.EVT_PAINT_SENSOR, sensorId(s), null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a paint-sensor handler of sensor {@code s} and
+     * unsubscribes, as RP1 0.60 did, even if other handlers remain: those receive none of these
+     * events until every handler has been removed and one is added again (docs/protocol.md section
+     * 10). Any thread, a handler included (the change applies from the next event).
+     *
+     * @param s the sensor
+     * @param h the handler to remove
+     */
     public synchronized void removePaintSensorEventHandler(RsBodyPaintSensor s, RsPaintSensorEventHandler h) {
         removeSubscribed(RsEvent.EVT_PAINT_SENSOR, sensorId(s), h);
     }
 
+    /**
+     * Adds {@code h} for timeout events (the answers to {@link #sendTimeoutRequest};
+     * docs/protocol.md section 7.6), called after the handlers added before it. These events answer
+     * requests and need no subscription: adding or removing handlers sends nothing. Any thread, a
+     * handler included (the change applies from the next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addTimeoutEventHandler(RsTimeoutEventHandler h) {
         addLocal(RsEvent.EVT_TIMEOUT, h);
     }
 
+    /**
+     * Removes every timeout handler. Sends nothing. Any thread, a handler included.
+     */
     public synchronized void removeTimeoutEventHandler() {
         removeLocal(RsEvent.EVT_TIMEOUT, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a timeout handler. Sends nothing. Any thread, a
+     * handler included.
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removeTimeoutEventHandler(RsTimeoutEventHandler h) {
         removeLocal(RsEvent.EVT_TIMEOUT, h);
     }
 
+    /**
+     * Adds {@code h} for position events (the answers to {@link #sendPositionRequest};
+     * docs/protocol.md section 7.3), called after the handlers added before it. These events answer
+     * requests and need no subscription: adding or removing handlers sends nothing. Any thread, a
+     * handler included (the change applies from the next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addPositionEventHandler(RsPositionEventHandler h) {
         addLocal(RsEvent.EVT_POSITION, h);
     }
 
+    /**
+     * Removes every position handler. Sends nothing. Any thread, a handler included.
+     */
     public synchronized void removePositionEventHandler() {
         removeLocal(RsEvent.EVT_POSITION, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a position handler. Sends nothing. Any thread, a
+     * handler included.
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removePositionEventHandler(RsPositionEventHandler h) {
         removeLocal(RsEvent.EVT_POSITION, h);
     }
 
+    /**
+     * Adds {@code h} for placement events (the answers to {@link #sendPlacementRequest};
+     * docs/protocol.md section 7.9), called after the handlers added before it. These events answer
+     * requests and need no subscription: adding or removing handlers sends nothing. Any thread, a
+     * handler included (the change applies from the next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addPlacementEventHandler(RsPlacementEventHandler h) {
         addLocal(RsEvent.EVT_PLACEMENT, h);
     }
 
+    /**
+     * Removes every placement handler. Sends nothing. Any thread, a handler included.
+     */
     public synchronized void removePlacementEventHandler() {
         removeLocal(RsEvent.EVT_PLACEMENT, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a placement handler. Sends nothing. Any thread, a
+     * handler included.
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removePlacementEventHandler(RsPlacementEventHandler h) {
         removeLocal(RsEvent.EVT_PLACEMENT, h);
     }
 
+    /**
+     * Adds {@code h} for target-selection events (the answers to the target selection requests;
+     * docs/protocol.md section 7.10), called after the handlers added before it. These events
+     * answer requests and need no subscription: adding or removing handlers sends nothing. Any
+     * thread, a handler included (the change applies from the next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addTargetSelectionEventHandler(RsTargetSelectionEventHandler h) {
         addLocal(RsEvent.EVT_TARGET_SELECTION, h);
     }
 
+    /**
+     * Removes every target-selection handler. Sends nothing. Any thread, a handler included.
+     */
     public synchronized void removeTargetSelectionEventHandler() {
         removeLocal(RsEvent.EVT_TARGET_SELECTION, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a target-selection handler. Sends nothing. Any
+     * thread, a handler included.
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removeTargetSelectionEventHandler(RsTargetSelectionEventHandler h) {
         removeLocal(RsEvent.EVT_TARGET_SELECTION, h);
     }
 
+    /**
+     * Adds {@code h} for plan events (the answers to {@link #sendPlanRequest}; docs/protocol.md
+     * section 7.11), called after the handlers added before it. These events answer requests and
+     * need no subscription: adding or removing handlers sends nothing. Any thread, a handler
+     * included (the change applies from the next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addPlanEventHandler(RsPlanEventHandler h) {
         addLocal(RsEvent.EVT_PLAN, h);
     }
 
+    /**
+     * Removes every plan handler. Sends nothing. Any thread, a handler included.
+     */
     public synchronized void removePlanEventHandler() {
         removeLocal(RsEvent.EVT_PLAN, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a plan handler. Sends nothing. Any thread, a
+     * handler included.
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removePlanEventHandler(RsPlanEventHandler h) {
         removeLocal(RsEvent.EVT_PLAN, h);
     }
 
+    /**
+     * Adds {@code h} for heartbeat events (the beats {@link #sendHeartbeatRequest} asks for;
+     * docs/protocol.md section 7.13), called after the handlers added before it. These events
+     * answer requests and need no subscription: adding or removing handlers sends nothing. Any
+     * thread, a handler included (the change applies from the next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addHeartbeatEventHandler(RsHeartbeatEventHandler h) {
         addLocal(RsEvent.EVT_HEARTBEAT, h);
     }
 
+    /**
+     * Removes every heartbeat handler. Sends nothing. Any thread, a handler included.
+     */
     public synchronized void removeHeartbeatEventHandler() {
         removeLocal(RsEvent.EVT_HEARTBEAT, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a heartbeat handler. Sends nothing. Any thread, a
+     * handler included.
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removeHeartbeatEventHandler(RsHeartbeatEventHandler h) {
         removeLocal(RsEvent.EVT_HEARTBEAT, h);
     }
 
+    /**
+     * Adds {@code h} for encoder-status events (the answers to {@code sendEncoderStatusRequest};
+     * docs/protocol.md section 7.14), called after the handlers added before it. These events
+     * answer requests and need no subscription: adding or removing handlers sends nothing. Any
+     * thread, a handler included (the change applies from the next event).
+     *
+     * @param h the handler
+     * @throws NullPointerException if {@code h} is null
+     */
     public synchronized void addEncoderStatusEventHandler(RsEncoderStatusEventHandler h) {
         addLocal(RsEvent.EVT_ENCODER_STATUS, h);
     }
 
+    /**
+     * Removes every encoder-status handler. Sends nothing. Any thread, a handler included.
+     */
     public synchronized void removeEncoderStatusEventHandler() {
         removeLocal(RsEvent.EVT_ENCODER_STATUS, null);
     }
 
+    /**
+     * Removes every registration of {@code h} as a encoder-status handler. Sends nothing. Any
+     * thread, a handler included.
+     *
+     * @param h the handler to remove
+     */
     public synchronized void removeEncoderStatusEventHandler(RsEncoderStatusEventHandler h) {
         removeLocal(RsEvent.EVT_ENCODER_STATUS, h);
     }
@@ -368,10 +700,9 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         return Objects.requireNonNull(sensor, "sensor").getID();
     }
 
+    /** RP1 0.60 threw {@code Error} here; a null argument is a {@code NullPointerException} naming it (docs/differences.md). */
     private static void requireHandler(RsEventHandler h) {
-        if (h == null) {
-            throw new Error("RsClient: attempt to register a null event handler");
-        }
+        Objects.requireNonNull(h, "handler");
     }
 
     /** Events that need no subscription (answers to requests, always delivered): only the handler is stored. */
@@ -441,10 +772,25 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         requests().sensorStatus(new RsSensorRequest(sensorId(sensor)));
     }
 
+    /**
+     * Asks the robot to move at the request's linear and rotational velocity for its duration
+     * (docs/protocol.md section 6.4). It replaces any motion in progress, is ignored while the
+     * robot is not placed, and is followed by motion-started and motion-halted events for the
+     * handlers subscribed to them. Any thread; before the client is connected it throws {@link
+     * IllegalStateException}, after the session ended it does nothing (see the class comment).
+     *
+     * @param r the motion
+     * @throws NullPointerException if {@code r} is null
+     */
     public synchronized void sendMotionRequest(RsMotionRequest r) {
         requests().motion(Objects.requireNonNull(r, "motion request"));
     }
 
+    /**
+     * Asks where the robot is: a position event answers (docs/protocol.md section 6.6). Any thread;
+     * before the client is connected it throws {@link IllegalStateException}, after the session
+     * ended it does nothing (see the class comment).
+     */
     public synchronized void sendPositionRequest() {
         requests().position();
     }
@@ -457,30 +803,78 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         requests().placement(new RsPlacementRequest(name));
     }
 
+    /**
+     * Stops the motion in progress, if any (docs/protocol.md section 6.5, behavior.md section 5.4):
+     * a moving robot stops at once and a motion-halted event (cause 1) follows for the handlers
+     * subscribed to it; a robot at rest sends nothing. Any thread; before the client is connected it
+     * throws {@link IllegalStateException}, after the session ended it does nothing (see the class
+     * comment).
+     */
     public synchronized void sendHaltRequest() {
         requests().halt(new RsHaltRequest());
     }
 
+    /**
+     * Selects ({@code status} true) or deselects the named target; only selected targets are seen
+     * by target sensors. One target-selection event answers for each target the request touched
+     * (docs/protocol.md section 6.9). Any thread; before the client is connected it throws {@link
+     * IllegalStateException}, after the session ended it does nothing (see the class comment).
+     *
+     * @param targetName the target's name in the floor plan; {@code "*"} for every target
+     * @param status whether it is to be selected
+     */
     public synchronized void sendTargetSelectionRequest(String targetName, boolean status) {
         sendTargetSelection(false, targetName, status, false);
     }
 
+    /**
+     * Deselects every target, then selects the named one (docs/protocol.md section 6.9). Any
+     * thread; before the client is connected it throws {@link IllegalStateException}, after the
+     * session ended it does nothing (see the class comment).
+     *
+     * @param targetName the target's name in the floor plan
+     */
     public synchronized void sendExclusiveTargetSelectionRequest(String targetName) {
         sendTargetSelection(false, targetName, true, true);
     }
 
+    /**
+     * Selects one target chosen at random from the simulation's random source (docs/protocol.md
+     * section 6.9). RP1 0.60 selects it whatever {@code status} says, and so does this server. Any
+     * thread; before the client is connected it throws {@link IllegalStateException}, after the
+     * session ended it does nothing (see the class comment).
+     *
+     * @param status sent as given; the server selects the target either way
+     */
     public synchronized void sendRandomTargetSelectionRequest(boolean status) {
         sendTargetSelection(true, null, status, false);
     }
 
+    /**
+     * Deselects every target, then selects one chosen at random (docs/protocol.md section 6.9). Any
+     * thread; before the client is connected it throws {@link IllegalStateException}, after the
+     * session ended it does nothing (see the class comment).
+     */
     public synchronized void sendExclusiveRandomTargetSelectionRequest() {
         sendTargetSelection(true, null, true, true);
     }
 
+    /**
+     * Selects ({@code status} true) or deselects every target of the plan (docs/protocol.md section
+     * 6.9). Any thread; before the client is connected it throws {@link IllegalStateException},
+     * after the session ended it does nothing (see the class comment).
+     *
+     * @param status whether they are to be selected
+     */
     public synchronized void sendAllTargetsSelectionRequest(boolean status) {
         sendTargetSelection(false, "*", status, false);
     }
 
+    /**
+     * Asks for the floor plan: a plan event answers (docs/protocol.md section 6.10). Any thread;
+     * before the client is connected it throws {@link IllegalStateException}, after the session
+     * ended it does nothing (see the class comment).
+     */
     public synchronized void sendPlanRequest() {
         requests().plan(new RsPlanRequest());
     }
@@ -490,6 +884,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         requests().heartbeat(new RsHeartbeatRequest(period));
     }
 
+    /**
+     * Cancels this client's heartbeat, if any (a heartbeat request with interval 0,
+     * docs/protocol.md section 6.11). Any thread; before the client is connected it throws {@link
+     * IllegalStateException}, after the session ended it does nothing (see the class comment).
+     */
     public synchronized void sendHeartbeatCancellationRequest() {
         requests().heartbeat(new RsHeartbeatRequest(0.0));
     }
@@ -510,11 +909,27 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
                 painter.getTrailerY(), painter.getTrailerWidth(), painter.getPaintColors()));
     }
 
+    /**
+     * Stops the painter's trail; the trail painted so far stays (docs/protocol.md section 6.12).
+     * Any thread; before the client is connected it throws {@link IllegalStateException}, after the
+     * session ended it does nothing (see the class comment).
+     *
+     * @param painter a painter of the body sent
+     * @throws NullPointerException if {@code painter} is null
+     */
     public synchronized void sendPainterDeactivationRequest(RsBodyPainter painter) {
         Objects.requireNonNull(painter, "painter").setPainterActivationStatus(false);
         requests().painterChange(new RsPainterChangeRequest(painter.getID(), false, false, false, 0.0, 0.0, 0.0, null));
     }
 
+    /**
+     * Erases the trail the painter has left (docs/protocol.md section 6.12). Any thread; before the
+     * client is connected it throws {@link IllegalStateException}, after the session ended it does
+     * nothing (see the class comment).
+     *
+     * @param painter a painter of the body sent
+     * @throws NullPointerException if {@code painter} is null
+     */
     public synchronized void sendPainterErasureRequest(RsBodyPainter painter) {
         requests().painterChange(new RsPainterChangeRequest(Objects.requireNonNull(painter, "painter").getID(), true, false,
                 false, 0.0, 0.0, 0.0, null));
@@ -772,6 +1187,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         shutdown();
     }
 
+    /** In the client's log; on standard error only when the client has no log at all. */
     private void report(String message) {
         if (logger != null) {
             logIt("X", message);

@@ -31,6 +31,10 @@ public class RsColor {
         BY_NAME = Collections.unmodifiableMap(m);
     }
 
+    /**
+     * An instance has no state: everything is in the static methods. Kept for programs written
+     * against 0.60.
+     */
     public RsColor() {
     }
 

@@ -15,6 +15,7 @@ import java.io.Serializable;
 public abstract class RsComponent implements Serializable, Cloneable {
     private static final long serialVersionUID = 1L;
 
+    /** A component; subclasses hold the state. */
     public RsComponent() {
     }
 

@@ -105,6 +105,10 @@ public class RsConnection extends RsProtocol implements Runnable {
     private volatile RsPlanRequestHandler planHandler;
     private volatile RsHeartbeatRequestHandler heartbeatHandler;
 
+    /**
+     * A connection not yet attached to streams: give it a socket or streams, or connect a client
+     * directly.
+     */
     public RsConnection() {
     }
 
@@ -416,122 +420,295 @@ public class RsConnection extends RsProtocol implements Runnable {
         }
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendTimeoutEvent(RsTimeoutEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendMouseClickEvent(RsMouseClickEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendPositionEvent(RsPositionEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendPlacementEvent(RsPlacementEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendMotionHaltedEvent(RsMotionHaltedEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendMotionStartedEvent(RsMotionStartedEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendTargetSensorEvent(RsTargetSensorEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendContactSensorEvent(RsContactSensorEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends a contact-sensor event with these values; as {@link #sendEvent}.
+     *
+     * @param simTime simulation time of the event, seconds
+     * @param sensorID part id of the sensor
+     * @param status whether the sensor is in contact
+     * @param contactObjectName the name of what it touches, or null
+     */
     public void sendContactSensorEvent(double simTime, int sensorID, boolean status, String contactObjectName) {
         sendEvent(new RsContactSensorEvent(simTime, sensorID, status, contactObjectName));
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendRangeSensorEvent(RsRangeSensorEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendTargetSelectionEvent(RsTargetSelectionEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendPlanEvent(RsPlanEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendPaintSensorEvent(RsPaintSensorEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendHeartbeatEvent(RsHeartbeatEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sends a heartbeat event with these values; as {@link #sendEvent}.
+     *
+     * @param simTime simulation time of the beat, seconds
+     * @param sequence the beat's number, from 1
+     */
     public void sendHeartbeatEvent(double simTime, int sequence) {
         sendEvent(new RsHeartbeatEvent(simTime, sequence));
     }
 
+    /**
+     * Sends the event; as {@link #sendEvent}, on the thread running the simulation's tasks.
+     *
+     * @param e the event
+     */
     public void sendEncoderStatusEvent(RsEncoderStatusEvent e) {
         sendEvent(e);
     }
 
+    /**
+     * Sets who handles the timeout requests this connection decodes (null: they are dropped). Any
+     * thread; the handler is called on the thread that decodes the request (see the class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setTimeoutRequestHandler(RsTimeoutRequestHandler h) {
         timeoutHandler = h;
     }
 
+    /**
+     * Sets who handles the subscription requests this connection decodes (null: they are dropped).
+     * Any thread; the handler is called on the thread that decodes the request (see the class
+     * comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setSubscriptionRequestHandler(RsSubscriptionRequestHandler h) {
         subscriptionHandler = h;
     }
 
+    /**
+     * Sets who handles the motion requests this connection decodes (null: they are dropped). Any
+     * thread; the handler is called on the thread that decodes the request (see the class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setMotionRequestHandler(RsMotionRequestHandler h) {
         motionHandler = h;
     }
 
+    /**
+     * Sets who handles the position requests this connection decodes (null: they are dropped). Any
+     * thread; the handler is called on the thread that decodes the request (see the class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setPositionRequestHandler(RsPositionRequestHandler h) {
         positionHandler = h;
     }
 
+    /**
+     * Sets who handles the placement requests this connection decodes (null: they are dropped). Any
+     * thread; the handler is called on the thread that decodes the request (see the class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setPlacementRequestHandler(RsPlacementRequestHandler h) {
         placementHandler = h;
     }
 
+    /**
+     * Sets who handles the halt requests this connection decodes (null: they are dropped). Any
+     * thread; the handler is called on the thread that decodes the request (see the class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setHaltRequestHandler(RsHaltRequestHandler h) {
         haltHandler = h;
     }
 
+    /**
+     * Sets who handles the sensor-status requests this connection decodes (null: they are dropped).
+     * Any thread; the handler is called on the thread that decodes the request (see the class
+     * comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setSensorRequestHandler(RsSensorRequestHandler h) {
         sensorHandler = h;
     }
 
+    /**
+     * Sets who handles the target-selection requests this connection decodes (null: they are
+     * dropped). Any thread; the handler is called on the thread that decodes the request (see the
+     * class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setTargetSelectionRequestHandler(RsTargetSelectionRequestHandler h) {
         targetSelectionHandler = h;
     }
 
+    /**
+     * Sets who handles the painter-change requests this connection decodes (null: they are
+     * dropped). Any thread; the handler is called on the thread that decodes the request (see the
+     * class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setPainterChangeRequestHandler(RsPainterChangeRequestHandler h) {
         painterChangeHandler = h;
     }
 
+    /**
+     * Sets who handles the actuator-control requests this connection decodes (null: they are
+     * dropped). Any thread; the handler is called on the thread that decodes the request (see the
+     * class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setActuatorControlRequestHandler(RsActuatorControlRequestHandler h) {
         actuatorControlHandler = h;
     }
 
+    /**
+     * Sets who handles the encoder-status requests this connection decodes (null: they are
+     * dropped). Any thread; the handler is called on the thread that decodes the request (see the
+     * class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setEncoderStatusRequestHandler(RsEncoderStatusRequestHandler h) {
         encoderStatusHandler = h;
     }
 
+    /**
+     * Sets who receives the body specification the client sends (null: it is dropped). Any thread.
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setBodyHandler(RsConnectionBodyHandler h) {
         bodyHandler = h;
     }
 
+    /**
+     * Sets who handles the plan requests this connection decodes (null: they are dropped). Any
+     * thread; the handler is called on the thread that decodes the request (see the class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setPlanRequestHandler(RsPlanRequestHandler h) {
         planHandler = h;
     }
 
+    /**
+     * Sets who handles the heartbeat requests this connection decodes (null: they are dropped). Any
+     * thread; the handler is called on the thread that decodes the request (see the class comment).
+     *
+     * @param h the handler, or null
+     */
     public synchronized void setHeartbeatRequestHandler(RsHeartbeatRequestHandler h) {
         heartbeatHandler = h;
     }

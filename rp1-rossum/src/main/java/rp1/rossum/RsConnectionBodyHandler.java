@@ -5,6 +5,7 @@ package rp1.rossum;
  * into its world. The simulator registers one with {@link RsConnection#setBodyHandler}.
  */
 public abstract class RsConnectionBodyHandler {
+    /** A body handler; subclasses say what to do with the body. */
     public RsConnectionBodyHandler() {
     }
 

@@ -10,6 +10,7 @@ public class RsFeet extends RsUnits {
     /** Feet per metre, the conversion the floor-plan language uses. */
     public static final double FEET_PER_METER = 3.2808;
 
+    /** Feet, without a resolution for rounding. */
     public RsFeet() {
         super("feet");
         conversionFactor[0] = FEET_PER_METER;

@@ -10,6 +10,7 @@ public class RsInches extends RsUnits {
     /** Inches per metre, the conversion the floor-plan language uses. */
     public static final double INCHES_PER_METER = 39.3696;
 
+    /** Inches, without a resolution for rounding. */
     public RsInches() {
         super("inches");
         conversionFactor[0] = INCHES_PER_METER;

@@ -10,6 +10,7 @@ public class RsKilometers extends RsUnits {
     /** Metres per kilometre. */
     public static final double METERS_PER_KILOMETER = 1000.0;
 
+    /** Kilometres, without a resolution for rounding. */
     public RsKilometers() {
         super("kilometers");
         conversionFactor[0] = 1.0 / METERS_PER_KILOMETER;

@@ -14,7 +14,17 @@ public interface RsLogInterface {
     /** Writes a verbose ("v") line if verbosity is on. */
     void verbose(String message);
 
+    /**
+     * Whether verbose lines are written.
+     *
+     * @return the verbosity
+     */
     boolean getVerbosity();
 
+    /**
+     * Switches verbose lines on or off.
+     *
+     * @param value whether verbose lines are written
+     */
     void setVerbosity(boolean value);
 }

@@ -4,6 +4,7 @@ import java.util.Locale;
 
 /** Metres, the internal unit; read-out like {@code "   1.234 m"}. */
 public class RsMeters extends RsUnits {
+    /** Metres, without a resolution for rounding. */
     public RsMeters() {
         super("meters");
     }

@@ -36,7 +36,9 @@ public abstract class RsMotion extends RsComponent {
     public boolean collision;
     /** The predicted first-contact time, seconds after time0 (meaningful when {@link #collision}). */
     public double collisionTime;
+    /** This motion's own continuity id ({@link #getContinuityID()}). */
     protected int continuityID;
+    /** The id shared by motions that continue one another ({@link #getContinuitySeriesID()}). */
     protected int continuitySeriesID;
 
     /** A motion at rest at the origin at time 0, starting a new continuity series. */

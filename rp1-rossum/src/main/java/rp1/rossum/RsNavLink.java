@@ -8,13 +8,21 @@ import java.awt.Graphics;
  * segment between the nodes; links are drawn as thin lines and their labels are not drawn.
  */
 public class RsNavLink extends RsObject {
+    /** The node the link starts at ({@link #setNodes}). */
     public RsNavNode n0;
+    /** The node the link ends at ({@link #setNodes}). */
     public RsNavNode n1;
     /** From {@code n0} to {@code n1}. */
     public RsSegment segment;
     /** Free for route-planning clients to mark the link. */
     public boolean visited;
 
+    /**
+     * A link called {@code name} of {@code plan}, not yet joining nodes; drawn in cyan.
+     *
+     * @param name the link's name, or null to have the plan name it
+     * @param plan the plan it belongs to
+     */
     public RsNavLink(String name, RsPlan plan) {
         super(name, plan);
         fillColor = Color.cyan;
@@ -55,6 +63,11 @@ public class RsNavLink extends RsObject {
         this.label = label;
     }
 
+    /**
+     * The link's label (never drawn).
+     *
+     * @return the label, or null
+     */
     public String getLabel() {
         return label;
     }

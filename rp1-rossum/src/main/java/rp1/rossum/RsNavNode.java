@@ -16,9 +16,17 @@ public class RsNavNode extends RsObject {
     public RsNavLink[] link = new RsNavLink[0];
     /** Free for route-planning clients to mark the node. */
     public boolean visited;
+    /** Position, metres. */
     public double x;
+    /** Position, metres. */
     public double y;
 
+    /**
+     * A node called {@code name} of {@code plan}, without a position yet; drawn in cyan.
+     *
+     * @param name the node's name, or null to have the plan name it
+     * @param plan the plan it belongs to
+     */
     public RsNavNode(String name, RsPlan plan) {
         super(name, plan);
         fillColor = Color.cyan;
@@ -47,6 +55,11 @@ public class RsNavNode extends RsObject {
         this.label = label;
     }
 
+    /**
+     * The node's label, drawn next to it.
+     *
+     * @return the label, or null
+     */
     public String getLabel() {
         return label;
     }

@@ -13,8 +13,11 @@ public abstract class RsObject {
     public boolean isGeometrySet;
     /** The plan this object belongs to. */
     public RsPlan plan;
+    /** Whether the object is selected ({@link #getSelected()}). */
     protected boolean selected = true;
+    /** The colour the object is filled with when drawn. */
     public Color fillColor;
+    /** The colour of the object's outline when drawn. */
     public Color lineColor;
     /** Text drawn next to targets, placements and nodes; null for none. */
     public String label;
@@ -28,10 +31,20 @@ public abstract class RsObject {
         this.plan = plan;
     }
 
+    /**
+     * Names the object; names are unique within a plan ({@link RsPlan#addObject}).
+     *
+     * @param name the name
+     */
     public void setName(String name) {
         this.name = name;
     }
 
+    /**
+     * The object's name in the plan.
+     *
+     * @return the name, or null if not yet named
+     */
     public String getName() {
         return name;
     }
@@ -62,6 +75,11 @@ public abstract class RsObject {
         return selected;
     }
 
+    /**
+     * Selects or deselects the object; only selected targets are sensed and drawn.
+     *
+     * @param selected whether it is selected
+     */
     public void setSelected(boolean selected) {
         this.selected = selected;
     }
@@ -72,14 +90,29 @@ public abstract class RsObject {
         lineColor = color;
     }
 
+    /**
+     * Sets the fill colour.
+     *
+     * @param color the colour
+     */
     public void setFillColor(Color color) {
         fillColor = color;
     }
 
+    /**
+     * Sets the outline colour.
+     *
+     * @param color the colour
+     */
     public void setLineColor(Color color) {
         lineColor = color;
     }
 
+    /**
+     * Sets the text drawn next to targets, placements and nodes.
+     *
+     * @param label the text, or null for none
+     */
     public void setLabel(String label) {
         this.label = label;
     }

@@ -9,10 +9,19 @@ import java.util.Arrays;
  * does not block motion or sensors. Where paint overlaps, the one declared last lies on top.
  */
 public class RsPaint extends RsObject {
+    /** The polygon's edges; null without geometry. */
     protected RsSegment[] segmentArray;
+    /** The polygon; null without geometry. */
     protected RsPolygon polygon;
+    /** The region code paint sensors report. */
     protected int region;
 
+    /**
+     * Paint called {@code name} of {@code plan}, without a polygon yet; light grey, region 0.
+     *
+     * @param name the paint's name, or null to have the plan name it
+     * @param plan the plan it belongs to
+     */
     public RsPaint(String name, RsPlan plan) {
         super(name, plan);
         fillColor = Color.lightGray;
@@ -45,6 +54,11 @@ public class RsPaint extends RsObject {
         return region;
     }
 
+    /**
+     * Sets the region code paint sensors report over this paint.
+     *
+     * @param region the code
+     */
     public void setRegion(int region) {
         this.region = region;
     }

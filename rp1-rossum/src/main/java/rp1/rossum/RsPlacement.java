@@ -12,14 +12,23 @@ public class RsPlacement extends RsObject {
     private static final double[][] PLATE = {
         {1.0, 0.0}, {0.6, 0.8485}, {-0.8485, 0.8485}, {-0.8485, -0.8485}, {0.6, -0.8485}};
 
+    /** Position, metres. */
     public double x;
+    /** Position, metres. */
     public double y;
     /** Radians, exactly as given (not normalized). */
     public double orientation;
+    /** Radius of the drawn plate, metres (only for drawing). */
     public double radius;
     /** Width of the drawn ring in pixels; below 2 a thin outline is drawn. */
     public int lineWidth;
 
+    /**
+     * A placement called {@code name} of {@code plan}, without a pose yet; drawn in dark grey.
+     *
+     * @param name the placement's name, or null to have the plan name it
+     * @param plan the plan it belongs to
+     */
     public RsPlacement(String name, RsPlan plan) {
         super(name, plan);
         fillColor = Color.darkGray;

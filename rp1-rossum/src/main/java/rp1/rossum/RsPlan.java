@@ -68,10 +68,20 @@ public class RsPlan {
         serialNumber = Math.max(serialNumber, n);
     }
 
+    /**
+     * The name of the file the plan was read from.
+     *
+     * @return the file name, or null
+     */
     public String getFileName() {
         return fileName;
     }
 
+    /**
+     * Records the name of the file the plan was read from.
+     *
+     * @param fileName the file name
+     */
     public void setFileName(String fileName) {
         this.fileName = fileName;
     }
@@ -81,6 +91,11 @@ public class RsPlan {
         this.units = units;
     }
 
+    /**
+     * The units the plan was written in (its values are stored in metres regardless).
+     *
+     * @return the units, or null if none were set
+     */
     public RsUnits getUnits() {
         return units;
     }
@@ -120,10 +135,20 @@ public class RsPlan {
         return objects.size();
     }
 
+    /**
+     * The navigation links, in declaration order.
+     *
+     * @return a new array
+     */
     public RsNavLink[] getNavLinkArray() {
         return objectsOf(RsNavLink.class).toArray(new RsNavLink[0]);
     }
 
+    /**
+     * The navigation nodes, in declaration order.
+     *
+     * @return a new array
+     */
     public RsNavNode[] getNavNodeArray() {
         return objectsOf(RsNavNode.class).toArray(new RsNavNode[0]);
     }
@@ -133,10 +158,20 @@ public class RsPlan {
         return objectsOf(RsWall.class).toArray(new RsWall[0]);
     }
 
+    /**
+     * The targets, in declaration order.
+     *
+     * @return a new array
+     */
     public RsTarget[] getTargetArray() {
         return objectsOf(RsTarget.class).toArray(new RsTarget[0]);
     }
 
+    /**
+     * The placements, in declaration order.
+     *
+     * @return a new array
+     */
     public RsPlacement[] getPlacementArray() {
         return objectsOf(RsPlacement.class).toArray(new RsPlacement[0]);
     }
@@ -232,6 +267,11 @@ public class RsPlan {
         return caption;
     }
 
+    /**
+     * Sets the caption (the window title).
+     *
+     * @param caption the caption, or null
+     */
     public void setCaption(String caption) {
         this.caption = caption;
     }

@@ -9,7 +9,9 @@ import java.io.Serializable;
 public class RsPoint implements Serializable {
     private static final long serialVersionUID = 1L;
 
+    /** The x coordinate. */
     public double x;
+    /** The y coordinate. */
     public double y;
 
     /** The origin. */
@@ -21,11 +23,23 @@ public class RsPoint implements Serializable {
         this(p.x, p.y);
     }
 
+    /**
+     * The point (x, y).
+     *
+     * @param x the x coordinate
+     * @param y the y coordinate
+     */
     public RsPoint(double x, double y) {
         this.x = x;
         this.y = y;
     }
 
+    /**
+     * The point (x, y), from pixel coordinates.
+     *
+     * @param x the x coordinate
+     * @param y the y coordinate
+     */
     public RsPoint(int x, int y) {
         this((double) x, (double) y);
     }
@@ -67,6 +81,12 @@ public class RsPoint implements Serializable {
         translate(v.x, v.y);
     }
 
+    /**
+     * The distance to {@code p}.
+     *
+     * @param p the other point
+     * @return the Euclidean distance
+     */
     public double distance(RsPoint p) {
         double dx = x - p.x;
         double dy = y - p.y;

@@ -17,7 +17,9 @@ public class RsPolygon implements Serializable {
     /** Result of {@link #checkContainment}: the point is outside. */
     public static final int OUTSIDE = -1;
 
+    /** The number of edges, equal to the number of vertices. */
     public int nSegment;
+    /** The edges, each from one vertex to the next, the last back to the first. */
     public RsSegment[] segment;
     /** Enclosed area in square metres (always positive). */
     public double area;

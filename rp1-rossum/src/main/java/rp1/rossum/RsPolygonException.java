@@ -4,9 +4,15 @@ package rp1.rossum;
 public class RsPolygonException extends Exception {
     private static final long serialVersionUID = 1L;
 
+    /** An exception without a message. */
     public RsPolygonException() {
     }
 
+    /**
+     * An exception saying what was wrong.
+     *
+     * @param message the detail message
+     */
     public RsPolygonException(String message) {
         super(message);
     }

@@ -21,14 +21,25 @@ public class RsProperties extends Properties {
 
     /** Name of the client properties file, in the working directory or as a resource. */
     public static final String FILE_NAME = "rossum.ini";
+    /** The lowest port accepted. */
     public static final int MIN_PORT = 1025;
+    /** The highest port accepted. */
     public static final int MAX_PORT = 32767;
 
+    /** The server's port ({@code port}); 7758 by default. */
     public int port;
+    /** The server's host ({@code hostName}); 127.0.0.1 by default. */
     public String hostName;
+    /**
+     * The log file ({@code logFileName}), used when {@link #logToFile} is on; rossum.log by
+     * default.
+     */
     public String logFileName;
+    /** Whether verbose lines are logged ({@code logVerbose}); off by default. */
     public boolean logVerbose;
+    /** Whether the client logs to {@link #logFileName} ({@code logToFile}); off by default. */
     public boolean logToFile;
+    /** Whether the client logs to standard output ({@code logToSystemOut}); on by default. */
     public boolean logToSystemOut;
 
     /**

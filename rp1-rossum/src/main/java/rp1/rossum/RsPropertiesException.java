@@ -6,9 +6,15 @@ import java.io.IOException;
 public class RsPropertiesException extends IOException {
     private static final long serialVersionUID = 1L;
 
+    /** An exception without a message. */
     public RsPropertiesException() {
     }
 
+    /**
+     * An exception saying what was wrong.
+     *
+     * @param message the detail message
+     */
     public RsPropertiesException(String message) {
         super(message);
     }

@@ -21,34 +21,64 @@ import java.net.Socket;
  * never reaches the stream.
  */
 public class RsProtocol implements RsLogInterface {
+    /** The protocol version every header carries (docs/protocol.md section 3). */
     protected static final int VERSION = 0;
+    /** The highest transaction code. */
     protected static final int MAX_TRANSACTION_CODE = 6;
+    /** The number of transaction codes, for tables indexed by code. */
     protected static final int TRANSACTION_ARRAY_SIZE = 7;
+    /** Transaction code: No transaction; never sent (docs/protocol.md section 3.1). */
     protected static final int NULL_TRANSACTION = 0;
+    /** Transaction code: The client's opening message (docs/protocol.md section 3.1). */
     protected static final int CONNECT = 1;
+    /** Transaction code: The server's answer to CONNECT (docs/protocol.md section 3.1). */
     protected static final int ACCEPT = 2;
+    /** Transaction code: An event, server to client (docs/protocol.md section 3.1). */
     protected static final int EVENT = 3;
+    /** Transaction code: A request, client to server (docs/protocol.md section 3.1). */
     protected static final int REQUEST = 4;
+    /** Transaction code: The robot's body, client to server (docs/protocol.md section 3.1). */
     protected static final int BODY_SPECIFICATION = 5;
+    /**
+     * Transaction code: An event's acknowledgement, client to server (docs/protocol.md section
+     * 3.1).
+     */
     protected static final int INTERLOCK = 6;
 
+    /** Body part type on the wire: a part with no wire encoding (docs/protocol.md section 8.2). */
     protected static final int UNDEFINED_BODY_PART = 0;
+    /** Body part type on the wire: a wheel system (docs/protocol.md section 8.2). */
     protected static final int WHEEL_SYSTEM = 1;
+    /** Body part type on the wire: a circle (docs/protocol.md section 8.2). */
     protected static final int BODY_CIRCLE = 2;
+    /** Body part type on the wire: a polygon shape (docs/protocol.md section 8.2). */
     protected static final int BODY_SHAPE = 3;
+    /** Body part type on the wire: a generic sensor (docs/protocol.md section 8.2). */
     protected static final int BODY_SENSOR = 4;
+    /** Body part type on the wire: a target sensor (docs/protocol.md section 8.2). */
     protected static final int BODY_TARGET_SENSOR = 5;
+    /** Body part type on the wire: a contact sensor (docs/protocol.md section 8.2). */
     protected static final int BODY_CONTACT_SENSOR = 6;
+    /** Body part type on the wire: a range sensor (docs/protocol.md section 8.2). */
     protected static final int BODY_RANGE_SENSOR = 7;
+    /** Body part type on the wire: a paint sensor (docs/protocol.md section 8.2). */
     protected static final int BODY_PAINT_SENSOR = 8;
+    /** Body part type on the wire: a painter (docs/protocol.md section 8.2). */
     protected static final int BODY_PAINTER = 9;
 
+    /** Plan object type on the wire: none (docs/protocol.md section 9). */
     protected static final int UNDEFINED_PLAN_OBJECT = 0;
+    /** Plan object type on the wire: a wall or obstacle (docs/protocol.md section 9). */
     protected static final int PLAN_WALL = 1;
+    /** Plan object type on the wire: a target (docs/protocol.md section 9). */
     protected static final int PLAN_TARGET = 2;
+    /** Plan object type on the wire: a placement (docs/protocol.md section 9). */
     protected static final int PLAN_PLACEMENT = 3;
+    /** Plan object type on the wire: a navigation node (docs/protocol.md section 9). */
     protected static final int PLAN_NAV_NODE = 4;
+    /** Plan object type on the wire: a navigation link (docs/protocol.md section 9). */
     protected static final int PLAN_NAV_LINK = 5;
+    /** Plan object type on the wire: floor paint (docs/protocol.md section 9). */
     protected static final int PLAN_PAINT = 6;
 
     /** Diagnostic names of the transaction codes, indexed by code. */
@@ -65,16 +95,23 @@ public class RsProtocol implements RsLogInterface {
         "MotionStarted", "MotionHalted", "Placement", "TargetSelection", "Plan", "PaintSensor",
         "Heartbeat", "EncoderStatus"};
 
+    /** The socket, when the session runs over one ({@link #setSocket}); null otherwise. */
     protected Socket socket;
+    /** The buffered input stream; null before streams are set and after shutdown. */
     protected DataInputStream input;
+    /** The buffered output stream; null before streams are set and after shutdown. */
     protected DataOutputStream output;
+    /** The client id every header carries (assigned in the handshake). */
     protected int clientID;
+    /** The client key every header carries (assigned in the handshake). */
     protected int clientKey;
     /** The number of the last message this side sent. */
     protected int sequence;
     /** The sequence number of the last message received from the peer (logged, never checked). */
     protected int serverSequence;
+    /** Where this session logs; null for no log. */
     protected RsLogInterface logger;
+    /** Whether verbose lines are logged; copied from the logger when one is set. */
     protected boolean verbosity;
 
     /** Serializes whole messages on the output stream. */
@@ -95,6 +132,7 @@ public class RsProtocol implements RsLogInterface {
     private InputStream rawInput;
     private OutputStream rawOutput;
 
+    /** A session without streams yet. */
     public RsProtocol() {
     }
 
@@ -120,10 +158,20 @@ public class RsProtocol implements RsLogInterface {
         }
     }
 
+    /**
+     * Whether an input stream is set (and the session not shut down).
+     *
+     * @return whether messages can be read
+     */
     public boolean isInputSet() {
         return input != null;
     }
 
+    /**
+     * Whether an output stream is set (and the session not shut down).
+     *
+     * @return whether messages can be written
+     */
     public boolean isOutputSet() {
         return output != null;
     }
@@ -275,10 +323,22 @@ public class RsProtocol implements RsLogInterface {
         write(new WireOut().colorArray(colors));
     }
 
+    /**
+     * Reads a COLOR (docs/protocol.md section 2).
+     *
+     * @return the colour
+     * @throws IOException if the stream fails or ends
+     */
     protected Color readColor() throws IOException {
         return wire().color("color");
     }
 
+    /**
+     * Reads a COLOR_ARRAY (docs/protocol.md section 2).
+     *
+     * @return the colours
+     * @throws IOException if the stream fails or ends
+     */
     protected Color[] readColorArray() throws IOException {
         return wire().colorArray("color array");
     }

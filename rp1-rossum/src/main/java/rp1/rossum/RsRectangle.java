@@ -10,9 +10,13 @@ import java.io.Serializable;
 public class RsRectangle implements Serializable {
     private static final long serialVersionUID = 1L;
 
+    /** The lower-left corner's x. */
     public double x;
+    /** The lower-left corner's y. */
     public double y;
+    /** The extent along x (0 or more). */
     public double width;
+    /** The extent along y (0 or more). */
     public double height;
     private boolean populated;
 
@@ -25,6 +29,14 @@ public class RsRectangle implements Serializable {
         copy(r);
     }
 
+    /**
+     * The rectangle with lower-left corner (x, y) and this size.
+     *
+     * @param x the corner's x
+     * @param y the corner's y
+     * @param width the extent along x
+     * @param height the extent along y
+     */
     public RsRectangle(double x, double y, double width, double height) {
         setBounds(x, y, width, height);
     }
@@ -55,6 +67,14 @@ public class RsRectangle implements Serializable {
         height = y1 - y;
     }
 
+    /**
+     * Sets corner and size; the rectangle is then no longer empty.
+     *
+     * @param x the corner's x
+     * @param y the corner's y
+     * @param width the extent along x
+     * @param height the extent along y
+     */
     public void setBounds(double x, double y, double width, double height) {
         this.x = x;
         this.y = y;
@@ -63,6 +83,12 @@ public class RsRectangle implements Serializable {
         populated = true;
     }
 
+    /**
+     * Sets the size, keeping the corner. An empty rectangle stays empty.
+     *
+     * @param width the extent along x
+     * @param height the extent along y
+     */
     public void setSize(double width, double height) {
         this.width = width;
         this.height = height;
@@ -74,11 +100,22 @@ public class RsRectangle implements Serializable {
         this.y = y;
     }
 
+    /**
+     * Moves the rectangle by (dx, dy).
+     *
+     * @param dx offset along x
+     * @param dy offset along y
+     */
     public void translate(double dx, double dy) {
         x += dx;
         y += dy;
     }
 
+    /**
+     * Moves the rectangle by {@code v}.
+     *
+     * @param v the offset
+     */
     public void translate(RsVector v) {
         translate(v.x, v.y);
     }
@@ -92,6 +129,11 @@ public class RsRectangle implements Serializable {
         insert(r.x + r.width, r.y + r.height);
     }
 
+    /**
+     * Makes this rectangle equal to {@code r}, emptiness included.
+     *
+     * @param r the rectangle to copy
+     */
     public void copy(RsRectangle r) {
         x = r.x;
         y = r.y;
@@ -117,6 +159,12 @@ public class RsRectangle implements Serializable {
         setBounds(x0, y0, x1 - x0, y1 - y0);
     }
 
+    /**
+     * Whether {@code p} lies inside or on the edge.
+     *
+     * @param p the point
+     * @return false for an empty rectangle
+     */
     public boolean contains(RsPoint p) {
         return contains(p.x, p.y);
     }

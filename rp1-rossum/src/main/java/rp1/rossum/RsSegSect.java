@@ -14,14 +14,21 @@ public class RsSegSect implements Serializable {
     /** Segments whose direction cross product is smaller than this are treated as parallel. */
     public static final double PARALLEL_LIMIT = 1.0e-9;
 
+    /**
+     * Whether the segments intersect (end points included); the other fields are meaningful only
+     * then.
+     */
     public boolean intersection;
     /** Fraction along the first segment at the intersection. */
     public double t1;
     /** Fraction along the second segment at the intersection. */
     public double t2;
+    /** The intersection point. */
     public double x;
+    /** The intersection point. */
     public double y;
 
+    /** No intersection yet: call {@code intersect} or its relatives to fill it in. */
     public RsSegSect() {
     }
 

@@ -19,10 +19,24 @@ public class RsSegment extends RsPoint implements Serializable {
         v = new RsVector();
     }
 
+    /**
+     * The segment from {@code p0} to {@code p1}.
+     *
+     * @param p0 the start
+     * @param p1 the end
+     */
     public RsSegment(RsPoint p0, RsPoint p1) {
         this(p0.x, p0.y, p1.x, p1.y);
     }
 
+    /**
+     * The segment from (x0, y0) to (x1, y1).
+     *
+     * @param x0 the start's x
+     * @param y0 the start's y
+     * @param x1 the end's x
+     * @param y1 the end's y
+     */
     public RsSegment(double x0, double y0, double x1, double y1) {
         super(x0, y0);
         v = new RsVector(x1 - x0, y1 - y0);

@@ -9,12 +9,21 @@ import java.awt.Graphics;
  * drawn. Geometry: {@code x, y, radius}.
  */
 public class RsTarget extends RsObject {
+    /** Position of the centre, metres. */
     public double x;
+    /** Position of the centre, metres. */
     public double y;
+    /** Radius, metres (only for drawing; sensors see the centre). */
     public double radius;
     /** Width of the drawn ring in pixels; below 2 a thin circle is drawn. */
     public int lineWidth;
 
+    /**
+     * A target called {@code name} of {@code plan}, selected, without a position yet.
+     *
+     * @param name the target's name, or null to have the plan name it
+     * @param plan the plan it belongs to
+     */
     public RsTarget(String name, RsPlan plan) {
         super(name, plan);
         fillColor = Color.lightGray;

@@ -15,11 +15,17 @@ import java.io.Serializable;
 public class RsTransform implements Serializable {
     private static final long serialVersionUID = 1L;
 
+    /** Matrix element m11 (see the class comment). */
     public double m11;
+    /** Matrix element m12 (see the class comment). */
     public double m12;
+    /** Matrix element m13 (see the class comment). */
     public double m13;
+    /** Matrix element m21 (see the class comment). */
     public double m21;
+    /** Matrix element m22 (see the class comment). */
     public double m22;
+    /** Matrix element m23 (see the class comment). */
     public double m23;
 
     /** The identity transform. */
@@ -90,6 +96,12 @@ public class RsTransform implements Serializable {
         return new RsPoint(m13, m23);
     }
 
+    /**
+     * Sets the translation part: the origin is mapped to (x, y).
+     *
+     * @param x the new m13
+     * @param y the new m23
+     */
     public void setOffset(double x, double y) {
         m13 = x;
         m23 = y;
@@ -100,10 +112,23 @@ public class RsTransform implements Serializable {
         return new RsVector(m11 * x + m12 * y, m21 * x + m22 * y);
     }
 
+    /**
+     * The image of {@code p}.
+     *
+     * @param p the point
+     * @return a new point
+     */
     public RsPoint map(RsPoint p) {
         return map(p.x, p.y);
     }
 
+    /**
+     * The image of (x, y).
+     *
+     * @param x the x coordinate
+     * @param y the y coordinate
+     * @return a new point
+     */
     public RsPoint map(double x, double y) {
         return new RsPoint(m11 * x + m12 * y + m13, m21 * x + m22 * y + m23);
     }
@@ -147,6 +172,11 @@ public class RsTransform implements Serializable {
         map(in.x, in.y, out);
     }
 
+    /**
+     * Makes this transform equal to {@code t}.
+     *
+     * @param t the transform to copy
+     */
     public void copy(RsTransform t) {
         m11 = t.m11;
         m12 = t.m12;

@@ -8,6 +8,7 @@ import java.util.Locale;
  * {@code conversionFactor[0]} is the number of user units per metre.
  */
 public abstract class RsUnits {
+    /** {@code conversionFactor[0]}: user units per metre. */
     protected double[] conversionFactor;
     private final String name;
     private double userResolution;
@@ -31,10 +32,20 @@ public abstract class RsUnits {
         return resolve(value, userResolution);
     }
 
+    /**
+     * Sets the step {@link #resolveUserCoordinate} rounds to; 0 (or less) for none.
+     *
+     * @param resolution the step in these units
+     */
     public void setUserResolution(double resolution) {
         userResolution = Math.max(0.0, resolution);
     }
 
+    /**
+     * The step {@link #resolveUserCoordinate} rounds to.
+     *
+     * @return the step in these units, 0 for none
+     */
     public double getUserResolution() {
         return userResolution;
     }
@@ -44,10 +55,20 @@ public abstract class RsUnits {
         return resolve(value, internalResolution);
     }
 
+    /**
+     * Sets the step {@link #resolveInternalCoordinate} rounds to; 0 (or less) for none.
+     *
+     * @param resolution the step in metres
+     */
     public void setInternalResolution(double resolution) {
         internalResolution = Math.max(0.0, resolution);
     }
 
+    /**
+     * The step {@link #resolveInternalCoordinate} rounds to.
+     *
+     * @return the step in metres, 0 for none
+     */
     public double getInternalResolution() {
         return internalResolution;
     }

@@ -17,7 +17,9 @@ public class RsVector implements Serializable {
     /** Magnitudes below this are treated as zero when a direction is needed. */
     public static final double NEARLY_ZERO = 1.0E-9d;
 
+    /** The x component. */
     public double x;
+    /** The y component. */
     public double y;
 
     /** The zero vector. */
@@ -29,6 +31,12 @@ public class RsVector implements Serializable {
         this(v.x, v.y);
     }
 
+    /**
+     * The vector (x, y).
+     *
+     * @param x the x component
+     * @param y the y component
+     */
     public RsVector(double x, double y) {
         this.x = x;
         this.y = y;
@@ -74,10 +82,21 @@ public class RsVector implements Serializable {
         return this;
     }
 
+    /**
+     * The length.
+     *
+     * @return the Euclidean norm
+     */
     public double magnitude() {
         return Math.sqrt(x * x + y * y);
     }
 
+    /**
+     * The dot product with {@code v}.
+     *
+     * @param v the other vector
+     * @return x·v.x + y·v.y
+     */
     public double dot(RsVector v) {
         return x * v.x + y * v.y;
     }

@@ -10,14 +10,27 @@ import java.awt.Graphics;
  * the polygon itself. Either way the plan event transmits the polygon's vertices.
  */
 public class RsWall extends RsObject {
+    /** Start of the centre line, metres (from a {@code wall} declaration, else 0). */
     protected double x0;
+    /** Start of the centre line, metres (from a {@code wall} declaration, else 0). */
     protected double y0;
+    /** End of the centre line, metres (from a {@code wall} declaration, else 0). */
     protected double x1;
+    /** End of the centre line, metres (from a {@code wall} declaration, else 0). */
     protected double y1;
+    /** Thickness, metres (from a {@code wall} declaration, else 0). */
     protected double thickness;
+    /** The polygon's edges. */
     protected RsSegment[] segmentArray;
+    /** The polygon robots and sensors meet. */
     protected RsPolygon polygon;
 
+    /**
+     * A wall (or obstacle) called {@code name} of {@code plan}, without geometry yet.
+     *
+     * @param name the wall's name, or null to have the plan name it
+     * @param plan the plan it belongs to
+     */
     public RsWall(String name, RsPlan plan) {
         super(name, plan);
         fillColor = Color.lightGray;

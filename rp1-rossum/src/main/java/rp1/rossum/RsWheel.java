@@ -19,14 +19,23 @@ public class RsWheel extends RsBodyShape implements RsEncoder {
 
     /** Steering (or caster) angle relative to the body's x axis, radians; used for drawing. */
     protected double motionOrientationOffset;
+    /** Number of encoder intervals per turn; 0 for a wheel without encoder. */
     protected int encoderIntervalCount;
+    /** Width of one encoder interval, radians. */
     protected double encoderIntervalWidth;
+    /** Signed count of interval boundaries crossed (backwards counts down). */
     protected int encoderAccumulator;
+    /** Unsigned count of interval boundaries crossed. */
     protected int encoderAbsoluteAccumulator;
+    /** +1 if the last movement was forward, -1 if backward, 0 if the wheel never moved. */
     protected int encoderQuadrature;
+    /** Wheel angle in [0, 2 pi). */
     protected double encoderAngle;
+    /** The interval the wheel angle is in. */
     protected int encoderInterval;
+    /** Hub speed remembered from the previous evaluation, m/s (signed). */
     protected double encoderMotionVelocity;
+    /** Simulation time of the previous evaluation, seconds. */
     protected double encoderMotionTime;
 
     private final double hubX;

@@ -19,10 +19,15 @@ public abstract class RsWheelSystem extends RsActuator {
     /** Duration of the motion an actuator-control request starts, seconds ("until further notice"). */
     static final double CONTROL_DURATION = 300000.0;
 
+    /** Distance between the left and right wheels, metres. */
     protected double trackWidth;
+    /** Distance between the rear and front axles, metres (0 for a differential drive). */
     protected double wheelBase;
+    /** Radius of the drive wheels, metres. */
     protected double driveWheelRadius;
+    /** The wheels, in the order added (a copy of {@link #wheelList}). */
     protected RsWheel[] wheels = new RsWheel[0];
+    /** The wheels, in the order added. */
     protected ArrayList<RsWheel> wheelList = new ArrayList<>();
     /** Centre of the axle, body coordinates (the body origin). */
     protected RsPoint center = new RsPoint();

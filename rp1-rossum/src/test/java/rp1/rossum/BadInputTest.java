@@ -1,12 +1,19 @@
 package rp1.rossum;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -29,6 +36,7 @@ class BadInputTest {
         client.setInputOutputStreams(new ByteArrayInputStream(bytes), new ByteArrayOutputStream());
         client.run();
         assertTrue(shutdown[0], "shutdown handler called");
+        assertTrue(client.isClosed(), "the session is closed");
         return log;
     }
 
@@ -86,18 +94,33 @@ class BadInputTest {
         assertLogged(log, "the server closed the connection");
     }
 
+    /**
+     * Each run ends the session (see {@link #runClientOn}) with exactly one line saying why: the
+     * server went away between messages, or the field that was wrong and what was wrong with it.
+     */
     @Test
-    void randomGarbageAlwaysEndsTheLoopCleanly() {
+    void randomGarbageAlwaysEndsTheSessionWithOneReason() {
         Random random = new Random(20261121L);
+        Map<String, Integer> problems = new TreeMap<>();
         for (int i = 0; i < 500; i++) {
             byte[] garbage = new byte[random.nextInt(200)];
             random.nextBytes(garbage);
             if (garbage.length > 20 && random.nextBoolean()) {
                 System.arraycopy(Hex.bytes(HEADER_EVENT), 0, garbage, 0, 20);
             }
-            runClientOn(garbage);
+            List<String> log = runClientOn(garbage);
+            List<String> reasons = log.stream().filter(l -> l.startsWith("X ")).collect(Collectors.toList());
+            assertEquals(1, reasons.size(), "one line says why the session ended: " + log);
+            Matcher m = TERMINATION.matcher(reasons.get(0));
+            assertTrue(m.matches(), "the reason names the field and the problem: " + reasons.get(0));
+            problems.merge(m.group(1) != null ? m.group(1) : m.group(3).replaceAll("-?\\d+", "N"), 1, Integer::sum);
         }
+        assertEquals(Set.of("expected N, got N", "unknown code N", "stream ended in the middle of a message",
+                "the server closed the connection"), problems.keySet(), "the garbage reached every kind of check: " + problems);
     }
+
+    private static final Pattern TERMINATION = Pattern.compile(
+            "X RsClient terminating: (?:(the server closed the connection)|([a-z][\\w ()]*): (.+))");
 
     @Test
     void aServerConnectionRejectsClientOnlyTransactions() throws Exception {

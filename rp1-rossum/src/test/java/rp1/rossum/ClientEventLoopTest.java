@@ -187,10 +187,10 @@ class ClientEventLoopTest {
     }
 
     @Test
-    void registeringANullHandlerIsAnError() {
+    void registeringANullHandlerIsANullPointerExceptionNamingTheArgument() {
         RsClient c = quietClient();
-        assertThrows(Error.class, () -> c.addTimeoutEventHandler(null));
-        assertThrows(Error.class, () -> c.addMouseClickEventHandler(null));
+        assertEquals("handler", assertThrows(NullPointerException.class, () -> c.addTimeoutEventHandler(null)).getMessage());
+        assertEquals("handler", assertThrows(NullPointerException.class, () -> c.addMouseClickEventHandler(null)).getMessage());
     }
 
     @Test

@@ -13,7 +13,7 @@ import java.nio.file.Path;
 import rp1.rossum.RsPlan;
 
 /**
- * Reads a floor-plan file (behavior.md section 1, User's Guide section 3.6) into an {@link RsPlan}:
+ * Reads a floor-plan file (behavior.md section 1, docs/floorplans.md) into an {@link RsPlan}:
  * walls, obstacles, targets, placements, floor paint and the navigation network, in declaration
  * order, in metres and radians, with the caption, the units the file was written in and the file
  * name. A plan that is malformed in any way is rejected as a whole with one {@link RsParsingException}

@@ -1,6 +1,6 @@
 /**
- * Floor-plan text to {@link rp1.rossum.RsPlan}: the language of behavior.md section 1 and the User's
- * Guide section 3.6. {@link rp1.planparser.RsPlanParser} is the entry point; a malformed plan gives
+ * Floor-plan text to {@link rp1.rossum.RsPlan}: the language of behavior.md section 1 and
+ * docs/floorplans.md. {@link rp1.planparser.RsPlanParser} is the entry point; a malformed plan gives
  * one {@link rp1.planparser.RsParsingException} naming file, line and column.
  *
  * <p>The path of the data: {@code CharSource} (characters, line endings folded to LF, positions) →

@@ -9,9 +9,7 @@ import java.util.concurrent.TimeUnit;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
-import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.snapshot.WorldSnapshot;
-import rp1.simulator.world.World;
 
 /**
  * Writes PNG pictures of the world (plan, trails, robots) without any display: with an interval,
@@ -34,8 +32,7 @@ public final class SnapshotWriter implements AutoCloseable {
     private static final int QUEUED_PICTURES = 4;
     private static final long CLOSE_WAIT_SECONDS = 60;
 
-    private final World world;
-    private final Scheduler scheduler;
+    private final Simulation simulation;
     private final Renderer renderer;
     private final Path file;
     private final double interval;
@@ -55,9 +52,8 @@ public final class SnapshotWriter implements AutoCloseable {
         if (!(interval >= 0.0) || Double.isInfinite(interval)) {
             throw new IllegalArgumentException("snapshotInterval must be finite and not negative, got " + interval);
         }
-        this.world = simulation.getWorld();
-        this.scheduler = simulation.getScheduler();
-        this.renderer = new Renderer(world.getPlan());
+        this.simulation = simulation;
+        this.renderer = new Renderer(simulation.getWorld().getPlan());
         this.file = file;
         this.interval = interval;
         this.log = log;
@@ -82,7 +78,7 @@ public final class SnapshotWriter implements AutoCloseable {
     /** An interval picture, on the thread running tasks. */
     private synchronized void picture(double simTime) {
         if (!closed) {
-            submit(WorldSnapshot.of(world, simTime), fileAt(file, simTime));
+            submit(WorldSnapshot.of(simulation, simTime), fileAt(file, simTime));
         }
     }
 
@@ -121,7 +117,7 @@ public final class SnapshotWriter implements AutoCloseable {
         } catch (Exception e) {
             log.log("Could not stop the interval pictures: " + e);
         }
-        submit(WorldSnapshot.of(world, scheduler.recordedTime()), file);
+        submit(WorldSnapshot.atRecordedTime(simulation), file);
         writer.shutdown();
         try {
             if (!writer.awaitTermination(CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {

@@ -10,17 +10,24 @@ import java.util.regex.Pattern;
 
 /**
  * Finds the places where a file refers to the project's reference documents ("behavior.md section
- * 5.4", "protocol.md sections 6.2 and 6.3", "behavior.md §9", "behavior.md 2.2", with or without
- * {@code docs/}) and to the directory of the original's material beside the repository. A citation
+ * 5.4", "protocol.md sections 6.2 and 6.3", "behavior.md §9", "behavior.md 2.2", "guide.md section 2",
+ * with or without {@code docs/}), to the directory of the original's material beside the repository,
+ * and to a numbered part of the original's user's guide, which is not in the repository. A citation
  * broken across two lines, as javadoc wraps them, is found on the line where it begins.
  */
 final class Citations {
     private static final String NUMBER = "(\\d+(?:\\.\\d+)*)";
     private static final Pattern CITATION = Pattern.compile(
-            "(behavior|protocol)\\.md,?\\s+(?:(?:sections?|§)\\s*)?" + NUMBER + "(?:\\s+and\\s+" + NUMBER + ")?");
+            "(behavior|protocol|guide)\\.md,?\\s+(?:(?:sections?|§)\\s*)?" + NUMBER + "(?:\\s+and\\s+" + NUMBER + ")?");
     /** The shared folder beside the repository, as a path or as path elements; group 1 is what follows. */
     private static final Pattern SHARED = Pattern.compile(
             "\\.\\.(?:/|\"\\s*,\\s*\")shared(?:/|\"\\s*,\\s*\")?([\\w.-]*)");
+    /**
+     * The original's user's guide named ("user's guide", "original guide", any case), then within the
+     * same sentence the word section, figure or table (or §) and a number.
+     */
+    private static final Pattern ORIGINAL_GUIDE = Pattern.compile(
+            "(?i)\\b(?:user'?s|original'?s?)\\s+guide\\b[^.;]{0,80}?\\b(?:sections?|figures?|tables?|§)\\s*\\d");
     /** The one thing tests may read from there: the original's sample plans, skipped when absent. */
     static final String ORIGINAL_SAMPLE_PLANS = "rp1-0.60-floorplans";
     private static final Pattern HEADING = Pattern.compile("^#{2,4}\\s+" + NUMBER + "\\.?\\s");
@@ -79,6 +86,22 @@ final class Citations {
                 if (!m.group(1).equals(ORIGINAL_SAMPLE_PLANS)) {
                     found.add(name + ":" + (i + 1) + ": " + lines.get(i).trim());
                 }
+            }
+        }
+        return found;
+    }
+
+    /**
+     * The places in {@code lines} that cite a section, figure or table of the original's user's guide,
+     * as "name:line: text": a reader of the repository cannot look them up, so the code cites docs/ or
+     * says the thing in place.
+     */
+    static List<String> originalGuideReferences(String name, List<String> lines) {
+        List<String> found = new ArrayList<>();
+        for (int i = 0; i < lines.size(); i++) {
+            Matcher m = ORIGINAL_GUIDE.matcher(withNextLine(lines, i));
+            if (m.find() && m.start() < lines.get(i).length()) {
+                found.add(name + ":" + (i + 1) + ": " + lines.get(i).trim());
             }
         }
         return found;

@@ -13,16 +13,18 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.BiFunction;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 
 /**
- * The repository stands alone: every section of docs/behavior.md or docs/protocol.md that the code,
- * the tests, the properties files, the README or the docs cite exists there under that number, and
- * nothing reads or cites the original's material beside the repository, except the tests that
- * compare against the original's sample plans.
+ * The repository stands alone: every section of docs/behavior.md, docs/protocol.md or docs/guide.md
+ * that the code, the tests, the properties files, the README or the docs cite exists there under that
+ * number, nothing cites a numbered part of the original's user's guide (which is not in the
+ * repository), and nothing reads or cites the original's material beside the repository, except the
+ * tests that compare against the original's sample plans.
  */
 class CitationsTest {
     private static final Path ROOT = Paths.get(System.getProperty("rp1.root", "."));
@@ -30,7 +32,7 @@ class CitationsTest {
     @Test
     void everyCitedSectionExistsInDocs() throws IOException {
         Map<String, Set<String>> sections = new HashMap<>();
-        for (String doc : List.of("behavior.md", "protocol.md")) {
+        for (String doc : List.of("behavior.md", "protocol.md", "guide.md")) {
             sections.put(doc, Citations.sections(read(ROOT.resolve("docs").resolve(doc))));
         }
         List<Citations.Citation> citations = new ArrayList<>();
@@ -43,11 +45,37 @@ class CitationsTest {
 
     @Test
     void nothingRefersToTheOriginalsMaterialButTheSamplePlanTests() throws IOException {
+        assertNoneFound(Citations::sharedReferences, "references to the material beside the repository");
+    }
+
+    @Test
+    void nothingCitesANumberedPartOfTheOriginalsUsersGuide() throws IOException {
+        assertNoneFound(Citations::originalGuideReferences,
+                "citations of the original's user's guide: cite docs/ or say it in place");
+    }
+
+    /** Runs {@code finder} (file name, lines: findings) over every citing file; expects no findings. */
+    private static void assertNoneFound(BiFunction<String, List<String>, List<String>> finder, String message)
+            throws IOException {
         List<String> found = new ArrayList<>();
         for (Path file : citingFiles()) {
-            found.addAll(Citations.sharedReferences(name(file), read(file)));
+            found.addAll(finder.apply(name(file), read(file)));
         }
-        assertEquals("", String.join("\n", found), "references to the material beside the repository");
+        assertEquals("", String.join("\n", found), message);
+    }
+
+    @Test
+    void aNumberedReferenceToTheOriginalsGuideIsReportedWithItsFileAndLine() {
+        String guide = "Gu" + "ide";
+        List<String> lines = List.of(
+                "/**",
+                " * ClientZero (User's " + guide + " section 4.6, Figures 8 and 9) and a backlog (the user's",
+                " * " + guide.toLowerCase() + "'s heartbeat backlog, section 5.4.1.1), as the original " + guide.toLowerCase() + " recommends (its",
+                " * section 4.1.1); the demo (User's " + guide + " Table 4).",
+                " * The original's user's " + guide.toLowerCase() + " documents kilometers. See docs/guide.md section 2.",
+                " */");
+        assertEquals(List.of("Z.java:2: " + lines.get(1).trim(), "Z.java:3: " + lines.get(2).trim(),
+                "Z.java:4: " + lines.get(3).trim()), Citations.originalGuideReferences("Z.java", lines));
     }
 
     @Test

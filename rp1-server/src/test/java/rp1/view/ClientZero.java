@@ -9,7 +9,7 @@ import rp1.rossum.RsBodySensor;
 import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.RsDifferentialSteering;
 
-/** The user's guide's ClientZero body (its Figure 9), optionally with a painter at its centre. */
+/** The original user's guide's ClientZero body, optionally with a painter at its centre. */
 final class ClientZero {
     static final double RADIUS = 0.15;
     static final double TRACK_WIDTH = 0.18;

@@ -11,10 +11,18 @@ public class RsContactSensorEvent extends RsSensorEvent {
     /** True while the sensor is in contact. */
     public final boolean status;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them. No object name is reported.
+     */
     public RsContactSensorEvent(double simTime, int sensorID, boolean status) {
         this(simTime, sensorID, status, null);
     }
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsContactSensorEvent(double simTime, int sensorID, boolean status, String nameOfObjectDetected) {
         super(EVT_CONTACT_SENSOR, simTime, sensorID, nameOfObjectDetected);
         this.status = status;

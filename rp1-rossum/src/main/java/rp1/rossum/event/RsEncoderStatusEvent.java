@@ -24,6 +24,10 @@ public class RsEncoderStatusEvent extends RsEvent {
     /** True if the accumulators were cleared after this report. */
     public final boolean clearOnReport;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsEncoderStatusEvent(double simTime, int requestIndex, int encoderID, int accumulatorValue,
                                 int absoluteAccumulatorValue, int quadratureValue, int encoderInterval,
                                 double encoderAngle, boolean clearOnReport) {

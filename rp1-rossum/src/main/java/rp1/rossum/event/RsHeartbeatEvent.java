@@ -10,6 +10,10 @@ public class RsHeartbeatEvent extends RsEvent {
     /** 1 for the first beat after the request, then 2, 3, .... */
     public final int sequence;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsHeartbeatEvent(double simTime, int sequence) {
         super(EVT_HEARTBEAT, simTime);
         this.sequence = sequence;

@@ -7,8 +7,11 @@ package rp1.rossum.event;
 public class RsMotionHaltedEvent extends RsEvent {
     private static final long serialVersionUID = 1L;
 
+    /** {@link #causeOfHalt}: the motion ran its full duration. */
     public static final int HALTED_ON_COMPLETION = 0;
+    /** {@link #causeOfHalt}: a halt request, or a placement, ended it. */
     public static final int HALTED_ON_REQUEST = 1;
+    /** {@link #causeOfHalt}: the robot ran into something. */
     public static final int HALTED_ON_COLLISION = 2;
 
     /** One of the {@code HALTED_ON_*} causes. */
@@ -22,6 +25,10 @@ public class RsMotionHaltedEvent extends RsEvent {
     /** How long the motion that ended lasted, seconds. */
     public final double duration;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsMotionHaltedEvent(double simTime, int causeOfHalt, double x, double y, double orientation, double duration) {
         super(EVT_MOTION_HALTED, simTime);
         this.causeOfHalt = causeOfHalt;

@@ -19,6 +19,10 @@ public class RsMotionStartedEvent extends RsEvent {
     /** Start heading, radians. */
     public final double orientation;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsMotionStartedEvent(double simTime, double linearVelocity, double rotationalVelocity, double duration, double x, double y, double orientation) {
         super(EVT_MOTION_STARTED, simTime);
         this.linearVelocity = linearVelocity;

@@ -15,6 +15,10 @@ public class RsMouseClickEvent extends RsEvent {
     /** Clicked point, world metres. */
     public final double y;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsMouseClickEvent(double simTime, int button, int clickCount, double x, double y) {
         super(EVT_MOUSE_CLICK, simTime);
         this.button = button;

@@ -16,6 +16,10 @@ public class RsPaintSensorEvent extends RsSensorEvent {
     /** Region code of the topmost paint under the detector, 0 if none. */
     public final int region;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsPaintSensorEvent(double simTime, int sensorID, double x, double y, boolean status, int region) {
         super(EVT_PAINT_SENSOR, simTime, sensorID);
         this.x = x;

@@ -19,6 +19,10 @@ public class RsPlacementEvent extends RsEvent {
     /** Placement heading, radians, as stored in the plan. */
     public final double orientation;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsPlacementEvent(double simTime, boolean valid, String name, double x, double y, double orientation) {
         super(EVT_PLACEMENT, simTime);
         this.valid = valid;
@@ -28,10 +32,20 @@ public class RsPlacementEvent extends RsEvent {
         this.orientation = orientation;
     }
 
+    /**
+     * The placement's name.
+     *
+     * @return {@link #name}
+     */
     public String getName() {
         return name;
     }
 
+    /**
+     * Whether the robot is now placed.
+     *
+     * @return {@link #valid}
+     */
     public boolean getValid() {
         return valid;
     }

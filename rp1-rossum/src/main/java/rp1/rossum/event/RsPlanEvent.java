@@ -9,6 +9,10 @@ public class RsPlanEvent extends RsEvent {
     /** The floor plan, an {@code RsPlan}, or null. */
     public final Object plan;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsPlanEvent(double simTime, Object plan) {
         super(EVT_PLAN, simTime);
         this.plan = plan;

@@ -17,6 +17,10 @@ public class RsPositionEvent extends RsEvent {
     /** Turn rate of the current or last motion, rad/s. */
     public final double turnRate;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsPositionEvent(double simTime, double x, double y, double orientation, double velocity, double turnRate) {
         super(EVT_POSITION, simTime);
         this.x = x;

@@ -20,11 +20,19 @@ public class RsRangeSensorEvent extends RsSensorEvent {
     /** Distance to the wall in metres (0 when nothing is detected). */
     public final double range;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them. No object name is reported.
+     */
     public RsRangeSensorEvent(double simTime, int sensorID, double x, double y, double ux, double uy,
                               boolean status, double range) {
         this(simTime, sensorID, x, y, ux, uy, status, range, null);
     }
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsRangeSensorEvent(double simTime, int sensorID, double x, double y, double ux, double uy,
                               boolean status, double range, String nameOfObjectDetected) {
         super(EVT_RANGE_SENSOR, simTime, sensorID, nameOfObjectDetected);

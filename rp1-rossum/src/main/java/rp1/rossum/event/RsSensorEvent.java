@@ -9,12 +9,23 @@ public abstract class RsSensorEvent extends RsEvent {
 
     /** Part id of the sensor ({@code RsBodySensor.getID()}). */
     public final int sensorID;
+    /**
+     * The name of the object the sensor detected, or null (see {@link #getNameOfObjectDetected()}).
+     */
     protected String nameOfObjectDetected;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them. No object name is reported.
+     */
     public RsSensorEvent(int eventID, double simTime, int sensorID) {
         this(eventID, simTime, sensorID, null);
     }
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsSensorEvent(int eventID, double simTime, int sensorID, String nameOfObjectDetected) {
         super(eventID, simTime);
         this.sensorID = sensorID;

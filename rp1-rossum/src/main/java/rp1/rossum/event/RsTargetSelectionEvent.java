@@ -11,6 +11,10 @@ public class RsTargetSelectionEvent extends RsEvent {
     /** True if the target is now selected. */
     public final boolean status;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsTargetSelectionEvent(double simTime, String targetName, boolean status) {
         super(EVT_TARGET_SELECTION, simTime);
         this.targetName = targetName;

@@ -26,11 +26,19 @@ public class RsTargetSensorEvent extends RsSensorEvent {
     /** Angle from the line of sight to the target, radians, positive to the left; 0 when not detected. */
     public final double bearing;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them. No object name is reported.
+     */
     public RsTargetSensorEvent(double simTime, int sensorID, double x, double y, double ux, double uy,
                                boolean status, double xDetection, double yDetection, double range, double bearing) {
         this(simTime, sensorID, x, y, ux, uy, status, xDetection, yDetection, range, bearing, null);
     }
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsTargetSensorEvent(double simTime, int sensorID, double x, double y, double ux, double uy,
                                boolean status, double xDetection, double yDetection, double range, double bearing,
                                String nameOfObjectDetected) {

@@ -9,6 +9,10 @@ public class RsTimeoutEvent extends RsEvent {
     /** The index {@code sendTimeoutRequest} returned. */
     public final int timeoutIndex;
 
+    /**
+     * An event with these values (the fields say what each one is). Clients receive events; the
+     * library and the server build them.
+     */
     public RsTimeoutEvent(double simTime, int timeoutIndex) {
         super(EVT_TIMEOUT, simTime);
         this.timeoutIndex = timeoutIndex;

@@ -12,16 +12,31 @@ import java.util.Locale;
 public class RsActuatorControlRequest extends RsRequest {
     private static final long serialVersionUID = 1L;
 
+    /**
+     * {@link #commandID}: stop. Without parameters the client library sends a halt request instead
+     * (docs/differences.md).
+     */
     public static final int HALT = 1;
+    /** {@link #commandID}: reset. The simulator reads only the parameter values (behavior.md section 5.5). */
     public static final int RESET = 2;
+    /**
+     * {@link #commandID}: drive the actuator with the parameter values (behavior.md section 5.5).
+     */
     public static final int ACTIVATE = 3;
 
     /** Part id of the actuator (wheel system). */
     public final int actuatorID;
     /** {@link #HALT}, {@link #RESET} or {@link #ACTIVATE}. */
     public final int commandID;
+    /** The named parameters, in the order the simulator reads their values. */
     protected ArrayList<ParameterPair> parameterList = new ArrayList<>();
 
+    /**
+     * A command without parameters yet: add them in the order the actuator reads them.
+     *
+     * @param actuatorID part id of the actuator (wheel system)
+     * @param commandID {@link #HALT}, {@link #RESET} or {@link #ACTIVATE}
+     */
     public RsActuatorControlRequest(int actuatorID, int commandID) {
         super(REQ_ACTUATOR_CONTROL);
         this.actuatorID = actuatorID;

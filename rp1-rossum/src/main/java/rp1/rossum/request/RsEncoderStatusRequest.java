@@ -11,6 +11,7 @@ public class RsEncoderStatusRequest extends RsRequest {
     /** Whether to zero the accumulators after reporting. */
     public final boolean clearOnReport;
 
+    /** A request with these values (the fields say what each one is). */
     public RsEncoderStatusRequest(int requestIndex, int[] encoderID, boolean clearOnReport) {
         super(REQ_ENCODER_STATUS);
         this.requestIndex = requestIndex;
@@ -18,6 +19,11 @@ public class RsEncoderStatusRequest extends RsRequest {
         this.clearOnReport = clearOnReport;
     }
 
+    /**
+     * The part ids of the wheels to report.
+     *
+     * @return {@link #encoderID} (the array itself, not a copy)
+     */
     public int[] getEncoderID() {
         return encoderID;
     }

@@ -4,6 +4,7 @@ package rp1.rossum.request;
 public class RsHaltRequest extends RsRequest {
     private static final long serialVersionUID = 1L;
 
+    /** A halt request; it has no values. */
     public RsHaltRequest() {
         super(REQ_HALT);
     }

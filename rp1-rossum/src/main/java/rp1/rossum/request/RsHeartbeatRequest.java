@@ -7,6 +7,7 @@ public class RsHeartbeatRequest extends RsRequest {
     /** Seconds of simulation time between beats; 0 cancels. */
     public final double interval;
 
+    /** A request with these values (the fields say what each one is). */
     public RsHeartbeatRequest(double interval) {
         super(REQ_HEARTBEAT);
         this.interval = interval;

@@ -15,6 +15,7 @@ public class RsMotionRequest extends RsRequest {
     /** Radians per second, positive counter-clockwise (left). */
     public final double rotationalVelocity;
 
+    /** A request with these values (the fields say what each one is). */
     public RsMotionRequest(double linearVelocity, double rotationalVelocity, double duration) {
         super(REQ_MOTION);
         this.linearVelocity = linearVelocity;

@@ -10,6 +10,7 @@ public class RsPlacementRequest extends RsRequest {
     /** The placement's name; null or empty for a random placement, "$random" for a random pose. */
     public final String name;
 
+    /** A request with these values (the fields say what each one is). */
     public RsPlacementRequest(String name) {
         super(REQ_PLACEMENT);
         this.name = name;

@@ -7,6 +7,7 @@ package rp1.rossum.request;
 public class RsPlanRequest extends RsRequest {
     private static final long serialVersionUID = 1L;
 
+    /** A plan request; it has no values. */
     public RsPlanRequest() {
         super(REQ_PLAN);
     }

@@ -7,6 +7,7 @@ public class RsSensorRequest extends RsRequest {
     /** Part id of the sensor. */
     public final int sensorID;
 
+    /** A request with these values (the fields say what each one is). */
     public RsSensorRequest(int sensorID) {
         super(REQ_SENSOR_STATUS);
         this.sensorID = sensorID;

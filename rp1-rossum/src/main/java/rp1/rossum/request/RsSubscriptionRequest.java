@@ -14,6 +14,7 @@ public class RsSubscriptionRequest extends RsRequest {
     /** True to subscribe, false to unsubscribe. */
     public final boolean eventEnable;
 
+    /** A request with these values (the fields say what each one is). */
     public RsSubscriptionRequest(int eventCode, int eventIndex, boolean eventEnable) {
         super(REQ_SUBSCRIPTION);
         this.eventCode = eventCode;

@@ -16,6 +16,7 @@ public class RsTargetSelectionRequest extends RsRequest {
     /** Deselect every target first. */
     public final boolean exclusive;
 
+    /** A request with these values (the fields say what each one is). */
     public RsTargetSelectionRequest(boolean random, String name, boolean status, boolean exclusive) {
         super(REQ_TARGET_SELECTION);
         this.random = random;

@@ -12,6 +12,7 @@ public class RsTimeoutRequest extends RsRequest {
     /** Echoed in the timeout event. */
     public final int timeoutIndex;
 
+    /** A request with these values (the fields say what each one is). */
     public RsTimeoutRequest(double timeoutDuration, int timeoutIndex) {
         super(REQ_TIMEOUT);
         this.timeoutDuration = Math.max(0.0, timeoutDuration);

@@ -7,8 +7,9 @@ import java.util.Arrays;
 
 /**
  * The stream a client's connection writes to, standing between the simulation and a client that may
- * stop reading (the user's guide's heartbeat backlog, section 5.4.1.1). {@code RsConnection} writes
- * each complete message and flushes once; every flush here ends one message.
+ * stop reading (a client that stops reading its heartbeats would otherwise fill the socket until the
+ * simulation's writes block). {@code RsConnection} writes each complete message and flushes once;
+ * every flush here ends one message.
  *
  * <p>A message that finds nothing waiting before it is written at once, as far as the
  * {@link Transport} takes it without blocking: a client that keeps up gets its events with no thread

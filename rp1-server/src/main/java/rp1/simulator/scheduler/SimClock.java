@@ -16,7 +16,7 @@ package rp1.simulator.scheduler;
  * in the recorded run is already in that sequence, so a hold of the replay's own would only stall it.</li>
  * </ul>
  *
- * <p>Three ways to hold time back: before {@link #begin()} nothing runs; while {@link #stop() stopped}
+ * <p>Three ways to hold time back: before {@link #begin()} nothing runs; while {@link #stop(double) stopped}
  * (the interlock waits for a client) nothing runs and time is frozen; while {@link #hold() held}
  * (waiting for clients to place their robots) time cannot advance, but work due at the current time
  * still runs. Not thread-safe on its own: the {@link Scheduler} guards it.

@@ -5,6 +5,7 @@ import java.util.List;
 
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsTarget;
+import rp1.simulator.Simulation;
 import rp1.simulator.world.PaintTrail;
 import rp1.simulator.world.Robot;
 import rp1.simulator.world.TrailSegment;
@@ -45,6 +46,19 @@ public record WorldSnapshot(RsPlan plan, double simTime, List<Boolean> targetSel
             addTrails(trails, r.getTrails());
         }
         return new WorldSnapshot(world.getPlan(), simTime, targetSelection(world.getPlan()), robots, trails);
+    }
+
+    /** The simulation's world now, as {@link #of(World, double)}; for observers outside the core (the view). */
+    public static WorldSnapshot of(Simulation simulation, double simTime) {
+        return of(simulation.getWorld(), simTime);
+    }
+
+    /**
+     * The simulation's world at the time its scheduler reached: the picture at exit, taken once the
+     * scheduler has stopped.
+     */
+    public static WorldSnapshot atRecordedTime(Simulation simulation) {
+        return of(simulation.getWorld(), simulation.getScheduler().recordedTime());
     }
 
     /**

@@ -4,8 +4,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static rp1.testing.Await.await;
 
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.OptionalInt;
 import java.util.concurrent.TimeUnit;
 
@@ -73,18 +75,14 @@ class DirectDeliveryTest {
         RunningServer server = TestServer.start(dir, "dlcEnabled=true", CLIENT, "simulationSpeed=20",
                 "enableNetworkClients=false");
         try {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while ((DirectDlc.latest == null || DirectDlc.latest.beatThreads.size() < 2) && System.nanoTime() < deadline) {
-                Thread.sleep(5);
-            }
+            await(() -> DirectDlc.latest != null && DirectDlc.latest.beatThreads.size() >= 2, Duration.ofSeconds(10),
+                    "the loaded client received two heartbeats");
             DirectDlc c = DirectDlc.latest;
             for (int i = 0; i < 100; i++) {
                 c.sendPositionRequest();
             }
-            while (c.positions.size() < 100 && System.nanoTime() < deadline) {
-                Thread.sleep(5);
-            }
-            assertEquals(100, c.positions.size(), "every request sent from this thread was answered");
+            await(() -> c.positions.size() >= 100, Duration.ofSeconds(10), "every request sent from this thread was answered");
+            assertEquals(100, c.positions.size(), "every request sent from this thread was answered once");
             assertEquals(TestServer.placementX(1), c.positions.get(99).x, 1e-9);
         } finally {
             server.stop();

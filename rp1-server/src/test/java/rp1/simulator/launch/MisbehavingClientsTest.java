@@ -2,9 +2,11 @@ package rp1.simulator.launch;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static rp1.testing.Await.await;
 
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
@@ -100,12 +102,9 @@ class MisbehavingClientsTest {
 
     /** The robots of the dropped clients that had one (the vanishing and the deaf client) have left the world. */
     private static void assertOnlyTheGoodRobotIsLeft(RunningServer server) throws InterruptedException {
-        long deadline = System.nanoTime() + 10_000_000_000L;
+        await(() -> server.getSimulation().getWorld().getRobots().size() == 1, Duration.ofSeconds(10),
+                "the robots of the dropped clients left the world");
         List<Robot> robots = server.getSimulation().getWorld().getRobots();
-        while (robots.size() != 1 && System.nanoTime() < deadline) {
-            Thread.sleep(10);
-            robots = server.getSimulation().getWorld().getRobots();
-        }
         assertEquals(1, robots.size(), "robots: " + robots);
         assertEquals("good", robots.get(0).getLabel());
     }

@@ -1,14 +1,15 @@
 package rp1.simulator.net;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static rp1.testing.Await.await;
 
-import java.io.ByteArrayOutputStream;
 import java.io.DataInputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.time.Duration;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
@@ -81,27 +82,40 @@ class OutboundQueueTest {
         OutboundQueue q = OutboundQueue.start(Transport.of(broken), 16, "writer test", failures::add);
         q.write(1);
         q.flush();
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (failures.isEmpty() && System.nanoTime() < deadline) {
-            Thread.sleep(1);
-        }
+        await(() -> !failures.isEmpty(), Duration.ofSeconds(10), "the writer thread reported the failure");
         assertEquals(List.of("cannot write to the client: connection reset"), failures);
         assertThrows(IOException.class, () -> q.write(2));
     }
 
+    /**
+     * Every call the queue makes on the transport is recorded, so what went out and when is known
+     * without waiting to see whether something else happens: the first call is the flush's attempt.
+     */
     @Test
     void bytesWrittenBeforeAFlushStayTogether() throws Exception {
-        ByteArrayOutputStream sink = new ByteArrayOutputStream();
-        OutboundQueue q = OutboundQueue.start(Transport.of(sink), 16, "writer test", failures::add);
+        List<String> calls = new CopyOnWriteArrayList<>();
+        Transport recording = new Transport() {
+            @Override
+            public int tryWrite(byte[] b, int off, int len) {
+                calls.add("try " + Arrays.toString(Arrays.copyOfRange(b, off, off + len)));
+                return 0;
+            }
+
+            @Override
+            public void write(byte[] b, int off, int len) {
+                calls.add("write " + Arrays.toString(Arrays.copyOfRange(b, off, off + len)));
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+        OutboundQueue q = OutboundQueue.start(recording, 16, "writer test", failures::add);
         q.write(new byte[] {1, 2});
         q.write(3);
-        Thread.sleep(20);
-        assertEquals(0, sink.size(), "nothing goes out before the flush");
+        assertEquals(List.of(), calls, "nothing goes out before the flush");
         q.flush();
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (q.getWaiting() > 0 && System.nanoTime() < deadline) {
-            Thread.sleep(1);
-        }
-        assertArrayEquals(new byte[] {1, 2, 3}, sink.toByteArray());
+        await(() -> q.getWaiting() == 0, Duration.ofSeconds(10), "the writer thread wrote the queued message");
+        assertEquals(List.of("try [1, 2, 3]", "write [1, 2, 3]"), calls, "the flush offered the whole message at once");
     }
 }

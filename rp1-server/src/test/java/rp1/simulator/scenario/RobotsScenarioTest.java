@@ -3,6 +3,9 @@ package rp1.simulator.scenario;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static rp1.testing.Await.await;
+
+import java.time.Duration;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -147,10 +150,7 @@ class RobotsScenarioTest {
             leaving.sendPlacementRequest("centre");
             leaving.await(RsPlacementEvent.class);
             s.closeClient(0);
-            long deadline = System.nanoTime() + 10_000_000_000L;
-            while (!s.simulation().getSessions().isEmpty() && System.nanoTime() < deadline) {
-                Thread.sleep(1);
-            }
+            await(() -> s.simulation().getSessions().isEmpty(), Duration.ofSeconds(10), "the server noticed the client leave");
             ScenarioClient mover = s.connect(new ScenarioClient(Bodies.round("mover")));
             mover.once(RsPlacementEvent.class, e -> mover.sendMotionRequest(new RsMotionRequest(2.0, 0.0, 3.0)));
             mover.sendPlacementRequest("west");

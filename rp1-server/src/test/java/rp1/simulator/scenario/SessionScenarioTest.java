@@ -3,8 +3,10 @@ package rp1.simulator.scenario;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static rp1.testing.Await.await;
 
 import java.awt.Color;
+import java.time.Duration;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
@@ -160,11 +162,7 @@ class SessionScenarioTest {
             leave.await(RsPlacementEvent.class);
             assertEquals(2, s.simulation().getWorld().getRobots().size());
             s.closeClient(1);
-            long deadline = System.nanoTime() + 10_000_000_000L;
-            while (s.simulation().getSessions().size() > 1 && System.nanoTime() < deadline) {
-                Thread.sleep(1);
-            }
-            assertEquals(1, s.simulation().getSessions().size(), "the server noticed the client leave");
+            await(() -> s.simulation().getSessions().size() == 1, Duration.ofSeconds(10), "the server noticed the client leave");
             stay.sendTimeoutRequest(1.0);
             stay.await(RsTimeoutEvent.class);
             assertEquals(1, s.simulation().getWorld().getRobots().size());

@@ -3,7 +3,9 @@ package rp1.simulator.scheduler;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static rp1.testing.Await.await;
 
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
@@ -190,7 +192,7 @@ class SchedulerTest {
         });
         Thread holder = new Thread(s::runUntilIdle);
         holder.start();
-        assertTrue(inside.await(5, TimeUnit.SECONDS));
+        await(inside, Duration.ofSeconds(5), "the holder is running the task");
         s.shutdown();
         assertTrue(s.awaitIdle(5000));
         assertEquals(Arrays.asList("finished"), log, "the task had finished when awaitIdle returned");
@@ -319,12 +321,12 @@ class SchedulerTest {
         CountDownLatch leave = new CountDownLatch(1);
         s.scheduleImmediate(0.0, t -> {
             inside.countDown();
-            await(leave);
+            await(leave, Duration.ofSeconds(5), "the test let the busy task end");
         });
         s.schedule(1.0, Scheduler.NORMAL, record("after"));
         Thread holder = new Thread(s::runUntilIdle);
         holder.start();
-        assertTrue(inside.await(5, TimeUnit.SECONDS));
+        await(inside, Duration.ofSeconds(5), "the holder is running the busy task");
         s.pump(TimeUnit.SECONDS.toNanos(1));
         assertTrue(log.isEmpty(), "the holder is busy; a pump must not run tasks beside it");
         leave.countDown();
@@ -351,7 +353,7 @@ class SchedulerTest {
                 applied.countDown();
             }
         });
-        assertTrue(applied.await(5, TimeUnit.SECONDS));
+        await(applied, Duration.ofSeconds(5), "the dispatch loop applied the input");
         s.shutdown();
         loop.join(5000);
         assertFalse(loop.isAlive());
@@ -360,14 +362,6 @@ class SchedulerTest {
     private static void sleep(long millis) {
         try {
             Thread.sleep(millis);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-    }
-
-    private static void await(CountDownLatch latch) {
-        try {
-            latch.await(5, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
