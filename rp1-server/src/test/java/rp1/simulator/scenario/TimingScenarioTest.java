@@ -76,6 +76,25 @@ class TimingScenarioTest {
     }
 
     @Test
+    void aHeartbeatFasterThanAMillisecondIsSlowedToOneAndTimeRunsOnForEveryone() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient fast = s.connect(new ScenarioClient(Bodies.round("fast")));
+            ScenarioClient other = s.connect(new ScenarioClient(Bodies.round("other")));
+            fast.sendPlacementRequest("west"); // at max speed, time passes only while a robot is on the floor
+            fast.on(RsHeartbeatEvent.class, b -> {
+                if (b.sequence == 20) {
+                    fast.sendHeartbeatCancellationRequest();
+                }
+            });
+            fast.sendHeartbeatRequest(1e-300);
+            other.sendTimeoutRequest(0.01);
+            RsHeartbeatEvent fifth = fast.await(RsHeartbeatEvent.class, b -> b.sequence == 5);
+            assertEquals(0.005, fifth.simTime, 1e-12, "beats every millisecond, the floor");
+            assertEquals(0.01, other.await(RsTimeoutEvent.class).simTime, 1e-12, "the other client's time came");
+        }
+    }
+
+    @Test
     void aZeroLengthTimeoutReadsTheClock() throws Exception {
         try (Scenario s = Scenario.lockstep(Plans.HALL)) {
             ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
