@@ -17,7 +17,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Type, T
 
 from . import codes
 from .body import Body, BodyPart, ContactSensor, PaintSensor, Painter, RangeSensor, Sensor, TargetSensor
-from .bodycodec import encode_body
+from .bodycodec import encode_body, read_body
 from .errors import ProtocolError
 from .events import (EVENT_TYPES, ContactSensorEvent, Event, PaintSensorEvent, RangeSensorEvent, SensorEvent,
                      TargetSensorEvent)
@@ -25,10 +25,10 @@ from .messages import HEADER, read_accept, read_event_message
 from .requests import (ActuatorControlRequest, EncoderStatusRequest, HaltRequest, HeartbeatRequest, MotionRequest,
                        PainterChangeRequest, PlacementRequest, PlanRequest, PositionRequest, Request,
                        SensorStatusRequest, SubscriptionRequest, TargetSelectionRequest, TimeoutRequest,
-                       encode_request)
+                       encode_request, read_request)
 from .settings import ClientSettings
 from .steering import Wheel
-from .wire import Reader
+from .wire import Reader, require_finite, require_finite_fields
 
 log = logging.getLogger("rp1client")
 
@@ -283,17 +283,32 @@ class Client:
         """Describes the robot to the simulator; send it once, before any request about the robot.
 
         Raises:
-            ValueError: if the body has no part that can be sent, or a name is too long.
+            ValueError: if the body has no part that can be sent, a name is too long, or a dimension
+                is NaN or infinite (the message names the part and field; nothing is sent).
         """
-        self._send(codes.BODY_SPECIFICATION, encode_body(body))
+        payload = encode_body(body)
+        require_finite_fields("body ", payload, read_body)
+        self._send(codes.BODY_SPECIFICATION, payload)
 
     def send_request(self, request: Request) -> None:
-        """Sends any request object as it is (the ``send_..._request`` methods build them)."""
-        self._send(codes.REQUEST, encode_request(request))
+        """Sends any request object as it is (the ``send_..._request`` methods build them).
+
+        Raises:
+            ValueError: if a string is too long, or a number is NaN or infinite (the message names
+                the field, e.g. ``motion rotational velocity``; nothing is sent).
+        """
+        payload = encode_request(request)
+        require_finite_fields("", payload, read_request)
+        self._send(codes.REQUEST, payload)
 
     def send_timeout_request(self, duration: float) -> int:
         """Asks for a timeout event after ``duration`` simulated seconds; returns its index
-        (1, 2, 3, ...), which the event echoes."""
+        (1, 2, 3, ...), which the event echoes.
+
+        Raises:
+            ValueError: if ``duration`` is NaN or infinite (nothing is sent, no index is used).
+        """
+        require_finite("duration", duration)
         index = next(self._timeout_indexes)
         self.send_request(TimeoutRequest(duration, index))
         return index
@@ -334,7 +349,13 @@ class Client:
         self.send_request(PlanRequest())
 
     def send_heartbeat_request(self, interval: float) -> None:
-        """Asks for a heartbeat event every ``interval`` simulated seconds (0 cancels)."""
+        """Asks for a heartbeat event every ``interval`` simulated seconds (0 cancels; the server
+        raises an interval below 1 ms to 1 ms).
+
+        Raises:
+            ValueError: if ``interval`` is NaN or infinite (nothing is sent).
+        """
+        require_finite("interval", interval)
         self.send_request(HeartbeatRequest(interval))
 
     def send_heartbeat_cancellation_request(self) -> None:

@@ -6,6 +6,7 @@ describes a run of fields by kind, attribute and name, so that events and reques
 once and read and written from the same declaration.
 """
 
+import math
 import struct
 from dataclasses import dataclass
 from typing import Any, Callable, ClassVar, Dict, List, Optional, Sequence, Tuple, TypeVar, Union
@@ -115,6 +116,27 @@ def decode_modified_utf8(data: bytes, field: str) -> str:
     return text.encode("utf-16-be", "surrogatepass").decode("utf-16-be", "surrogatepass")
 
 
+def _check_finite(field: str, value: float) -> None:
+    if not math.isfinite(value):
+        raise ProtocolError(field, f"{value!r} is not a finite number")
+
+
+def require_finite(argument: str, value: float) -> None:
+    """Raises ValueError unless ``value`` is a finite number: the server drops a client that sends
+    NaN or an infinity (docs/protocol.md section 14)."""
+    if not math.isfinite(value):
+        raise ValueError(f"{argument} must be a finite number, got {value!r}")
+
+
+def require_finite_fields(what: str, data: bytes, read: Callable[["Reader"], object]) -> None:
+    """Raises ValueError naming the field if ``read`` finds NaN or an infinity in ``data``, the
+    encoding of a request or a body about to be sent."""
+    try:
+        read(Reader(data, finite=True))
+    except ProtocolError as e:
+        raise ValueError(what + str(e)) from None
+
+
 def _check_continuation(data: bytes, i: int, length: int, field: str) -> None:
     if i + length > len(data):
         raise ProtocolError(field, "invalid modified UTF-8 (malformed input: partial character at end)")
@@ -127,15 +149,18 @@ class Reader:
     """Reads RP1 fields from ``buf[pos:end]``; every method names the field it reads.
 
     Running out of bytes raises a :class:`ProtocolError` with ``truncated`` set, so that a caller
-    reading from a stream can wait for more bytes and try the message again.
+    reading from a stream can wait for more bytes and try the message again. With ``finite`` set,
+    an f64 that is NaN or infinite is a :class:`ProtocolError` too, as the server has it for what a
+    client sends (docs/protocol.md section 14).
     """
 
-    __slots__ = ("buf", "pos", "end")
+    __slots__ = ("buf", "pos", "end", "finite")
 
-    def __init__(self, buf: Buffer, pos: int = 0, end: Optional[int] = None) -> None:
+    def __init__(self, buf: Buffer, pos: int = 0, end: Optional[int] = None, finite: bool = False) -> None:
         self.buf = buf
         self.pos = pos
         self.end = len(buf) if end is None else end
+        self.finite = finite
 
     @property
     def remaining(self) -> int:
@@ -157,7 +182,10 @@ class Reader:
         return _I32.unpack_from(self.buf, self._take(4, field))[0]
 
     def f64(self, field: str) -> float:
-        return _F64.unpack_from(self.buf, self._take(8, field))[0]
+        value: float = _F64.unpack_from(self.buf, self._take(8, field))[0]
+        if self.finite:
+            _check_finite(field, value)
+        return value
 
     def boolean(self, field: str) -> bool:
         """Any non-zero byte is true, as Java's ``readBoolean`` has it."""
@@ -316,6 +344,10 @@ class Record:
                 values[attr] = r.utf(name)
             elif r.end - r.pos >= layout.size:
                 values.update(zip((a for _, a, _ in fields), r.unpack(layout, fields[0][2])))
+                if r.finite:
+                    for kind, attr, name in fields:
+                        if kind == "d":
+                            _check_finite(name, values[attr])
             else:
                 for kind, attr, name in fields:
                     values[attr] = r.i32(name) if kind == "i" else r.f64(name) if kind == "d" else r.boolean(name)

@@ -43,7 +43,8 @@ final class BodyCodec {
     /**
      * Decodes a payload produced by {@link #encode(RsBody)} (or by an RP1 0.60 client).
      *
-     * @throws RsProtocolException naming the field if the bytes are malformed or truncated
+     * @throws RsProtocolException naming the field if the bytes are malformed or truncated, or a
+     *         number is NaN or infinite
      */
     static RsBody decode(byte[] payload) throws IOException {
         return decode(WireIn.of(payload));
@@ -58,6 +59,22 @@ final class BodyCodec {
     static RsBody copy(RsBody body) {
         try {
             return decode(encode(body));
+        } catch (IOException e) {
+            throw new IllegalStateException("a body this library encoded cannot be decoded", e);
+        }
+    }
+
+    /**
+     * Refuses a body payload that the server would refuse: one whose dimensions include NaN or an
+     * infinity (decoding checks every number).
+     *
+     * @throws IllegalArgumentException naming the first such field
+     */
+    static void requireFinite(WireOut payload) {
+        try {
+            decode(payload.toByteArray());
+        } catch (RsProtocolException e) {
+            throw new IllegalArgumentException("body " + e.getMessage(), e);
         } catch (IOException e) {
             throw new IllegalStateException("a body this library encoded cannot be decoded", e);
         }
@@ -220,7 +237,7 @@ final class BodyCodec {
             case RsProtocol.WHEEL_SYSTEM:
                 return readWheelSystem(in, f);
             case RsProtocol.BODY_CIRCLE:
-                return new RsBodyCircle(in.f64(f + ".xCenter"), in.f64(f + ".yCenter"), in.f64(f + ".radius"));
+                return new RsBodyCircle(in.finite(f + ".xCenter"), in.finite(f + ".yCenter"), in.finite(f + ".radius"));
             case RsProtocol.BODY_SHAPE:
                 return readShape(in, f, RsBodyShape::new);
             case RsProtocol.BODY_TARGET_SENSOR:
@@ -255,29 +272,29 @@ final class BodyCodec {
         int n = in.count(f + " count", WireLimits.MAX_OUTLINE_VERTICES);
         double[] p = new double[2 * n];
         for (int i = 0; i < n; i++) {
-            p[2 * i] = in.f64(f + "[" + i + "].x");
-            p[2 * i + 1] = in.f64(f + "[" + i + "].y");
+            p[2 * i] = in.finite(f + "[" + i + "].x");
+            p[2 * i + 1] = in.finite(f + "[" + i + "].y");
         }
         return p;
     }
 
     private static RsBodyPart readTargetSensor(WireIn in, String f) throws IOException {
         double[] p = readOutline(in, f + ".outline");
-        return new RsBodyTargetSensor(p, p.length / 2, in.f64(f + ".xDetector"), in.f64(f + ".yDetector"),
-                in.f64(f + ".sightAngle"), in.f64(f + ".width"), in.f64(f + ".maxRange"),
+        return new RsBodyTargetSensor(p, p.length / 2, in.finite(f + ".xDetector"), in.finite(f + ".yDetector"),
+                in.finite(f + ".sightAngle"), in.finite(f + ".width"), in.finite(f + ".maxRange"),
                 in.i32(f + ".nWidthBin"), in.i32(f + ".nRangeBin"));
     }
 
     private static RsBodyPart readRangeSensor(WireIn in, String f) throws IOException {
         double[] p = readOutline(in, f + ".outline");
-        return new RsBodyRangeSensor(p, p.length / 2, in.f64(f + ".xDetector"), in.f64(f + ".yDetector"),
-                in.f64(f + ".sightAngle"), in.f64(f + ".maxRange"), in.i32(f + ".nRangeBin"));
+        return new RsBodyRangeSensor(p, p.length / 2, in.finite(f + ".xDetector"), in.finite(f + ".yDetector"),
+                in.finite(f + ".sightAngle"), in.finite(f + ".maxRange"), in.i32(f + ".nRangeBin"));
     }
 
     private static RsBodyPart readPaintSensor(WireIn in, String f) throws IOException {
         double[] p = readOutline(in, f + ".outline");
         RsBodyPaintSensor s = new RsBodyPaintSensor(p, p.length / 2,
-                in.f64(f + ".xDetector"), in.f64(f + ".yDetector"));
+                in.finite(f + ".xDetector"), in.finite(f + ".yDetector"));
         int n = in.count(f + ".nRegions", WireLimits.MAX_REGIONS);
         int[] regions = new int[n];
         for (int i = 0; i < n; i++) {
@@ -295,10 +312,10 @@ final class BodyCodec {
     private static RsBodyPart readWheelSystem(WireIn in, String f) throws IOException {
         RsWheelSystem system;
         if (in.i32(f + ".systemType") == DIFFERENTIAL) {
-            system = new RsDifferentialSteering(in.f64(f + ".trackWidth"), in.f64(f + ".driveWheelRadius"));
+            system = new RsDifferentialSteering(in.finite(f + ".trackWidth"), in.finite(f + ".driveWheelRadius"));
         } else {
-            system = new RsAckermanSteering(in.f64(f + ".trackWidth"), in.f64(f + ".wheelBase"),
-                    in.f64(f + ".driveWheelRadius"), in.f64(f + ".maxAbsSteeringAngle"), in.bool(f + ".dualSteering"));
+            system = new RsAckermanSteering(in.finite(f + ".trackWidth"), in.finite(f + ".wheelBase"),
+                    in.finite(f + ".driveWheelRadius"), in.finite(f + ".maxAbsSteeringAngle"), in.bool(f + ".dualSteering"));
         }
         int n = in.count(f + ".nWheels", WireLimits.MAX_WHEELS);
         for (int k = 0; k < n; k++) {
@@ -310,10 +327,10 @@ final class BodyCodec {
     private static RsWheel readWheel(WireIn in, String f) throws IOException {
         int wheelType = in.i32(f + ".wheelType");
         double[] p = readOutline(in, f + ".outline");
-        double x = in.f64(f + ".x");
-        double y = in.f64(f + ".y");
-        double radius = in.f64(f + ".wheelRadius");
-        double maxSteering = in.f64(f + ".maxAbsSteeringAngle");
+        double x = in.finite(f + ".x");
+        double y = in.finite(f + ".y");
+        double radius = in.finite(f + ".wheelRadius");
+        double maxSteering = in.finite(f + ".maxAbsSteeringAngle");
         int intervals = in.i32(f + ".encoderIntervalCount");
         RsWheel wheel = wheelType == CASTER
                 ? new RsWheelCaster(p, p.length / 2, x, y)

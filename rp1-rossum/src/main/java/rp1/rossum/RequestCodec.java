@@ -177,7 +177,10 @@ final class RequestCodec {
         return new Copying(target);
     }
 
-    /** Reads everything after the header of a REQUEST transaction and hands it to {@code sink}. */
+    /**
+     * Reads everything after the header of a REQUEST transaction and hands it to {@code sink}. Every
+     * floating-point field must be a finite number (protocol.md section 14).
+     */
     static void decode(WireIn in, RequestSink sink) throws IOException {
         int code = in.i32("request code");
         if (code < 0 || code > RsRequest.REQ_MAX_CODE) {
@@ -186,7 +189,7 @@ final class RequestCodec {
         in.i32("request index");
         switch (code) {
             case RsRequest.REQ_TIMEOUT: {
-                double duration = in.f64("timeout duration");
+                double duration = in.finite("timeout duration");
                 sink.timeout(duration, in.i32("timeout index"));
                 break;
             }
@@ -198,8 +201,8 @@ final class RequestCodec {
                 sink.sensorStatus(new RsSensorRequest(in.i32("sensor id")));
                 break;
             case RsRequest.REQ_MOTION:
-                sink.motion(new RsMotionRequest(in.f64("motion linear velocity"),
-                        in.f64("motion rotational velocity"), in.f64("motion duration")));
+                sink.motion(new RsMotionRequest(in.finite("motion linear velocity"),
+                        in.finite("motion rotational velocity"), in.finite("motion duration")));
                 break;
             case RsRequest.REQ_HALT:
                 sink.halt(new RsHaltRequest());
@@ -226,7 +229,7 @@ final class RequestCodec {
                 sink.plan(new RsPlanRequest());
                 break;
             case RsRequest.REQ_HEARTBEAT:
-                sink.heartbeat(new RsHeartbeatRequest(in.f64("heartbeat interval")));
+                sink.heartbeat(new RsHeartbeatRequest(in.finite("heartbeat interval")));
                 break;
             case RsRequest.REQ_PAINTER_CHANGE:
                 sink.painterChange(decodePainterChange(in));
@@ -249,9 +252,9 @@ final class RequestCodec {
             return new RsPainterChangeRequest(id, false, false, false, 0.0, 0.0, 0.0, null);
         }
         boolean defined = in.bool("painter trailer defined");
-        double x = in.f64("painter trailer x");
-        double y = in.f64("painter trailer y");
-        double w = in.f64("painter trailer width");
+        double x = in.finite("painter trailer x");
+        double y = in.finite("painter trailer y");
+        double w = in.finite("painter trailer width");
         return new RsPainterChangeRequest(id, false, true, defined, x, y, w, in.colorArray("painter colors"));
     }
 
@@ -260,7 +263,7 @@ final class RequestCodec {
         int n = in.count("actuator parameter count", WireLimits.MAX_ACTUATOR_PARAMETERS);
         for (int i = 0; i < n; i++) {
             String name = in.str("actuator parameter " + i + " name");
-            r.addParameter(name, in.f64("actuator parameter " + i + " value"));
+            r.addParameter(name, in.finite("actuator parameter " + i + " value"));
         }
         return r;
     }

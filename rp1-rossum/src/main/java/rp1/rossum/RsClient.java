@@ -760,8 +760,10 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      * Asks for a timeout event after {@code duration} seconds of simulation time.
      *
      * @return the timeout's index (1, 2, 3, ... per client), echoed in the timeout event
+     * @throws IllegalArgumentException if the duration is NaN or infinite (nothing is sent)
      */
     public synchronized int sendTimeoutRequest(double duration) {
+        requireFinite("duration", duration);
         int index = ++timeoutIndex;
         requests().timeout(duration, index);
         return index;
@@ -781,9 +783,14 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      *
      * @param r the motion
      * @throws NullPointerException if {@code r} is null
+     * @throws IllegalArgumentException if a velocity or the duration is NaN or infinite (nothing is sent)
      */
     public synchronized void sendMotionRequest(RsMotionRequest r) {
-        requests().motion(Objects.requireNonNull(r, "motion request"));
+        Objects.requireNonNull(r, "motion request");
+        requireFinite("linearVelocity", r.linearVelocity);
+        requireFinite("rotationalVelocity", r.rotationalVelocity);
+        requireFinite("duration", r.duration);
+        requests().motion(r);
     }
 
     /**
@@ -879,8 +886,14 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         requests().plan(new RsPlanRequest());
     }
 
-    /** Asks for a heartbeat event every {@code period} seconds of simulation time (0 cancels). */
+    /**
+     * Asks for a heartbeat event every {@code period} seconds of simulation time (0 cancels; the server
+     * raises a period below 1 ms to 1 ms).
+     *
+     * @throws IllegalArgumentException if the period is NaN or infinite (nothing is sent)
+     */
     public synchronized void sendHeartbeatRequest(double period) {
+        requireFinite("period", period);
         requests().heartbeat(new RsHeartbeatRequest(period));
     }
 
@@ -897,6 +910,8 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      * Starts the painter's trail. A painter without a colour, or whose trailer was never positioned or
      * sized, cannot paint: a deactivation is sent instead (RP1 0.60 sent a truncated message in the
      * second case, corrupting the stream).
+     *
+     * @throws IllegalArgumentException if the trailer's position or width is NaN or infinite (nothing is sent)
      */
     public synchronized void sendPainterActivationRequest(RsBodyPainter painter) {
         Objects.requireNonNull(painter, "painter");
@@ -904,6 +919,9 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
             sendPainterDeactivationRequest(painter);
             return;
         }
+        requireFinite("painter trailer x", painter.getTrailerX());
+        requireFinite("painter trailer y", painter.getTrailerY());
+        requireFinite("painter trailer width", painter.getTrailerWidth());
         painter.setPainterActivationStatus(true);
         requests().painterChange(new RsPainterChangeRequest(painter.getID(), false, true, true, painter.getTrailerX(),
                 painter.getTrailerY(), painter.getTrailerWidth(), painter.getPaintColors()));
@@ -940,9 +958,16 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      * apply: a parameterless HALT (what {@code getControlRequestForWheelRotation(0, 0)} returns) is
      * sent as a halt request, any other parameterless command is dropped with a log line. (RP1 0.60
      * left a partial message in the stream here.)
+     *
+     * @throws IllegalArgumentException if a parameter value is NaN or infinite (nothing is sent)
      */
     public synchronized void sendActuatorControlRequest(RsActuatorControlRequest r) {
         Objects.requireNonNull(r, "actuator control request");
+        String[] names = r.getParameterNames();
+        double[] values = r.getParameterValues();
+        for (int i = 0; i < values.length; i++) {
+            requireFinite("actuator parameter " + names[i], values[i]);
+        }
         if (r.getParameterNames().length > 0) {
             requests().actuatorControl(r);
         } else if (r.commandID == RsActuatorControlRequest.HALT) {
@@ -980,10 +1005,14 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /**
      * Describes the robot to the simulator; send it once, before any request about the robot.
      *
-     * @throws IllegalArgumentException if the body has no part that can be transmitted
+     * @throws IllegalArgumentException if the body has no part that can be transmitted, or a dimension
+     *         is NaN or infinite (the message names the part and field; nothing is sent)
      */
     public synchronized void sendBodySpecification(RsBody body) {
         Objects.requireNonNull(body, "body");
+        WireOut payload = new WireOut();
+        BodyCodec.encode(payload, body);
+        BodyCodec.requireFinite(payload);
         if (body.getID() == 0) {
             body.assignID(++bodiesSent);
         }
@@ -993,9 +1022,14 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
             l.body(body);
             return;
         }
-        WireOut payload = new WireOut();
-        BodyCodec.encode(payload, body);
         sendMessage(BODY_SPECIFICATION, payload);
+    }
+
+    /** The server drops a client that sends NaN or an infinity (protocol.md section 14): refuse it here. */
+    private static void requireFinite(String argument, double value) {
+        if (!Double.isFinite(value)) {
+            throw new IllegalArgumentException(argument + " must be a finite number, got " + value);
+        }
     }
 
     private void sendTargetSelection(boolean random, String name, boolean status, boolean exclusive) {

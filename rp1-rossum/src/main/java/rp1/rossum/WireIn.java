@@ -40,6 +40,18 @@ final class WireIn {
         }
     }
 
+    /**
+     * An f64 that a client sends (a request's field, a body's dimension): NaN and the infinities are
+     * refused, since one of them in a time, an interval or a velocity poisons the clock or a pose.
+     */
+    double finite(String field) throws IOException {
+        double v = f64(field);
+        if (!Double.isFinite(v)) {
+            throw new RsProtocolException(field, v + " is not a finite number");
+        }
+        return v;
+    }
+
     /** Any non-zero byte is true, as Java's DataInput reads it. */
     boolean bool(String field) throws IOException {
         try {

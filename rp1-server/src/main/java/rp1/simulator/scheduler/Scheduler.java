@@ -121,7 +121,11 @@ public final class Scheduler {
         }
     }
 
+    /** A time that is not a number would sort after every other and stall a paced clock's horizon. */
     private TaskHandle enqueue(boolean isImmediate, double time, int priority, boolean model, Task task) {
+        if (Double.isNaN(time)) {
+            throw new IllegalArgumentException("task time is not a number");
+        }
         lock.lock();
         try {
             Entry e = new Entry(time, priority, sequence++, model, task);

@@ -129,8 +129,9 @@ public final class SimClock {
 
     /**
      * Advances simulation time to what the deadlines say, but never past {@code horizon} (the time of
-     * the first queued timed task); returns the updated time. Lockstep, stopped, held and not yet begun
-     * clocks do not move.
+     * the first queued timed task); returns the updated time. Time never goes back: a horizon in the
+     * past (a negative timeout waiting to run) or not a number leaves it where it is. Lockstep, stopped,
+     * held and not yet begun clocks do not move.
      */
     double update(double horizon) {
         if (!lockstep && begun && !stopped && !held) {
@@ -140,8 +141,9 @@ public final class SimClock {
                 simAnchor -= estimate - simTime - maxLag;
                 estimate = simTime + maxLag;
             }
-            if (estimate > simTime) {
-                simTime = Math.min(estimate, horizon);
+            double reached = Math.min(estimate, horizon);
+            if (reached > simTime) {
+                simTime = reached;
             }
         }
         return simTime;

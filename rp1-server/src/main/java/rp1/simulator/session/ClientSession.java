@@ -353,7 +353,11 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
             heartbeat = null;
         }
         if (interval > 0.0) {
-            heartbeat = host.heartbeats().start((t, sequence) -> send(new RsHeartbeatEvent(t, sequence)), now, interval);
+            double applied = Math.max(interval, Heartbeats.MIN_INTERVAL);
+            if (applied != interval) {
+                log.verbose(description + ": heartbeat interval " + interval + " s raised to " + applied + " s");
+            }
+            heartbeat = host.heartbeats().start((t, sequence) -> send(new RsHeartbeatEvent(t, sequence)), now, applied);
         }
     }
 

@@ -16,6 +16,13 @@ import rp1.simulator.scheduler.TaskHandle;
  * their events are acknowledged in parallel instead of one interlocked round trip after another.
  */
 public final class Heartbeats implements Task {
+    /**
+     * The shortest interval a client gets, in simulated seconds; a shorter one is raised to it. It is the
+     * finest modelling interval the server accepts: nothing in the world changes faster, and a beat
+     * every 1e-300 s would hold simulated time still for everyone while the client reads.
+     */
+    public static final double MIN_INTERVAL = 0.001;
+
     /** Where a beat goes. */
     @FunctionalInterface
     interface Beater {

@@ -124,7 +124,7 @@ public sealed interface Request {
         }
     }
 
-    /** A heartbeat every {@code interval} seconds; 0 or less stops it. */
+    /** A heartbeat every {@code interval} seconds (at least {@link Heartbeats#MIN_INTERVAL}); 0 or less stops it. */
     record Heartbeat(double interval) implements Request {
         @Override
         public void applyTo(ClientSession s, double now) {

@@ -126,6 +126,14 @@ final class RawClient implements AutoCloseable {
         out.flush();
     }
 
+    void sendMotion(double linearVelocity, double rotationalVelocity, double duration) throws IOException {
+        request(3);
+        out.writeDouble(linearVelocity);
+        out.writeDouble(rotationalVelocity);
+        out.writeDouble(duration);
+        out.flush();
+    }
+
     void sendHeartbeat(double interval) throws IOException {
         request(10);
         out.writeDouble(interval);

@@ -1,6 +1,7 @@
 package rp1.simulator.scenario;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -17,6 +18,7 @@ import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.event.RsMotionStartedEvent;
 import rp1.rossum.event.RsPlacementEvent;
 import rp1.rossum.event.RsPositionEvent;
+import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.request.RsMotionRequest;
 import rp1.simulator.SimulationSettings;
 
@@ -47,6 +49,25 @@ class MotionScenarioTest {
             assertEquals(2.0, halted.x, 1e-12, "1 m east of the start: 0.5 m/s for 2 s");
             assertEquals(2.0, halted.y, 1e-12);
             assertEquals(0.0, halted.orientation, 1e-12);
+        }
+    }
+
+    @Test
+    void aMotionWithANaNTurnRateIsRefusedByTheLibraryAndTheRobotStaysWhereItIs() throws Exception {
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            ScenarioClient c = s.connect(new ScenarioClient(Bodies.round("bot")));
+            c.sendPlacementRequest("west");
+            c.await(RsPlacementEvent.class);
+            IllegalArgumentException refused = assertThrows(IllegalArgumentException.class,
+                    () -> c.sendMotionRequest(new RsMotionRequest(0.5, Double.NaN, 2.0)));
+            assertEquals("rotationalVelocity must be a finite number, got NaN", refused.getMessage());
+            c.once(RsTimeoutEvent.class, e -> c.sendPositionRequest());
+            c.sendTimeoutRequest(1.0);
+            RsPositionEvent p = c.await(RsPositionEvent.class);
+            assertEquals(1.0, p.simTime, 1e-12);
+            assertEquals(1.0, p.x, 0.0, "the robot is where it was placed, not at NaN");
+            assertEquals(2.0, p.y, 0.0);
+            assertEquals(0.0, p.orientation, 0.0);
         }
     }
 

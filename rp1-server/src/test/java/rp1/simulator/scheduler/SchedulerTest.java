@@ -2,6 +2,7 @@ package rp1.simulator.scheduler;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static rp1.testing.Await.await;
 
@@ -298,6 +299,38 @@ class SchedulerTest {
         s.runUntilIdle();
         assertEquals(Arrays.asList("answer@0.2"), log, "the half second the client took is not in the stamp");
         assertEquals(0.7, s.now(), 1e-12, "but the clock catches up with it");
+    }
+
+    @Test
+    void aTaskDueInThePastDoesNotTurnAPacedClockBack() {
+        long[] wallNanos = {500_000_000L};
+        Scheduler s = new Scheduler(SimClock.paced(() -> wallNanos[0], 1.0));
+        s.begin();
+        wallNanos[0] += 500_000_000L;
+        assertEquals(0.5, s.now(), 1e-12);
+        s.schedule(-1.5, Scheduler.NORMAL, record("negativeTimeout"));
+        wallNanos[0] += 1_000_000L;
+        assertTrue(s.runNext());
+        assertEquals(0.501, s.now(), 1e-12, "the clock goes on from where it was");
+        s.schedule(0.701, Scheduler.NORMAL, record("next"));
+        wallNanos[0] += 200_000_000L;
+        s.runUntilIdle();
+        assertEquals(Arrays.asList("negativeTimeout@-1.5", "next@0.701"), log);
+    }
+
+    @Test
+    void aTaskAtNaNIsRefusedAndAPacedClockRunsOn() {
+        long[] wallNanos = {0};
+        Scheduler s = new Scheduler(SimClock.paced(() -> wallNanos[0], 1.0));
+        s.begin();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> s.schedule(Double.NaN, Scheduler.NORMAL, record("nan")));
+        assertEquals("task time is not a number", e.getMessage());
+        s.schedule(0.3, Scheduler.NORMAL, record("later"));
+        wallNanos[0] = 400_000_000L;
+        s.runUntilIdle();
+        assertEquals(Arrays.asList("later@0.3"), log);
+        assertEquals(0.4, s.now(), 1e-12, "time still advances");
     }
 
     @Test
