@@ -8,6 +8,12 @@ public final class ExitStatus {
     public static final int STARTUP_FAILED = 1;
     /** A loaded client failed: its constructor, initialize() or run() threw. */
     public static final int CLIENT_FAILED = 2;
+    /**
+     * An {@code Error} (running out of memory, say) ended a thread of the server: the server cannot
+     * be trusted to serve anyone, so the process ends rather than keep the port open (70 is
+     * sysexits' EX_SOFTWARE, an internal error).
+     */
+    public static final int FATAL_ERROR = 70;
 
     private ExitStatus() {
     }
