@@ -27,6 +27,11 @@ public final class ClientBudgets {
     /** Bytes of a message that has begun to arrive and is not yet whole ({@code clientMessageBudget}). */
     public final int message;
 
+    /**
+     * Budgets in bytes, each positive.
+     *
+     * @throws IllegalArgumentException naming the budget that is not positive
+     */
     public ClientBudgets(int output, int timeouts, int subscriptions, int message) {
         this.output = positive("output", output);
         this.timeouts = positive("timeouts", timeouts);
