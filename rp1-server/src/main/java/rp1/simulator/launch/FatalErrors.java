@@ -15,6 +15,8 @@ final class FatalErrors implements Thread.UncaughtExceptionHandler {
 
     private final Thread.UncaughtExceptionHandler otherwise;
     private final PrintStream err;
+    /** Memory set aside while all is well, given back so that the message can be written when it is not. */
+    private volatile byte[] reserve = new byte[1 << 20];
 
     private FatalErrors(Thread.UncaughtExceptionHandler otherwise, PrintStream err) {
         this.otherwise = otherwise;
@@ -36,6 +38,7 @@ final class FatalErrors implements Thread.UncaughtExceptionHandler {
             }
             return;
         }
+        reserve = null;
         try {
             err.println("rp1.Server: " + e + " on thread \"" + t.getName() + "\"; the server stops (exit status "
                     + ExitStatus.FATAL_ERROR + ")");

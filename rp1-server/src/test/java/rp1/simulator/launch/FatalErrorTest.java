@@ -54,7 +54,7 @@ class FatalErrorTest {
         TestServer.write(dir, "port=" + port, "simulationSpeed=1", "waitForClients=0",
                 "clientTimeoutBudget=" + Integer.MAX_VALUE);
         File output = dir.resolve("output.txt").toFile();
-        Process p = new ProcessBuilder(JavaCommand.of(List.of("-Xmx48m", "-XX:+UseSerialGC"), "rp1.Server",
+        Process p = new ProcessBuilder(JavaCommand.of(List.of("-Xmx32m", "-XX:+UseSerialGC"), "rp1.Server",
                 "-p", TestServer.PROPERTIES))
                 .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(output).start();
         try {
