@@ -19,8 +19,8 @@ import java.util.List;
  */
 final class BodyCodec {
     /** Marks an empty part slot on the wire; nothing follows it. */
-    private static final int EMPTY_SLOT = -1;
-    private static final int DIFFERENTIAL = 0;
+    static final int EMPTY_SLOT = -1;
+    static final int DIFFERENTIAL = 0;
     private static final int ACKERMAN = 1;
     private static final int PLAIN_WHEEL = 0;
     private static final int CASTER = 1;

@@ -83,8 +83,8 @@ public class RsConnection extends RsProtocol implements Runnable {
     private final RequestSink dispatcher = new Dispatcher();
     /** Bytes handed to {@link #receive} that do not yet make a whole message. */
     private final FeedBuffer feed = new FeedBuffer();
-    /** Why the bytes in {@link #feed} are not yet a message (the field they end in); current while any wait. */
-    private String incomplete;
+    /** How far the message at the start of {@link #feed} has been scanned for its end. */
+    private final MessageScanner scanner = new MessageScanner();
     private volatile boolean introduced;
     private volatile DirectLink direct;
     private RsInterlock interlock;
@@ -219,7 +219,9 @@ public class RsConnection extends RsProtocol implements Runnable {
      * {@link #run()} would dispatch it (the CONNECT/ACCEPT handshake first, unless
      * {@link #exchangeIntroductions()} already did it); an incomplete one waits for the next call.
      * The bytes are parsed where they are; only the start of an incomplete message is kept, so the
-     * caller may reuse its array once this returns.
+     * caller may reuse its array once this returns. Where an incomplete message would end is worked
+     * out from the bytes as they arrive, each byte once, and the message is decoded once, whole: a
+     * message that comes a few bytes at a time costs what it would cost in one piece.
      *
      * <p>A handler's RuntimeException (or Error) is not caught, as in {@code run()}: the message that
      * caused it counts as consumed, and the messages after it wait for the next call (or for
@@ -248,22 +250,18 @@ public class RsConnection extends RsProtocol implements Runnable {
         int start = at;
         try {
             while (at < end) {
-                ByteArrayInputStream window = new ByteArrayInputStream(buffer, at, end - at);
-                try {
-                    readMessage(new WireIn(new DataInputStream(window)));
-                } catch (TruncatedMessageException e) {
+                int size = scanner.scan(buffer, at, end, introduced);
+                if (size < 0) {
                     if (end - at > WireLimits.MAX_MESSAGE_BYTES) {
-                        throw new RsProtocolException(e.getField(), "message longer than "
-                                + WireLimits.MAX_MESSAGE_BYTES + " bytes");
+                        throw new RsProtocolException(truncation(buffer, at, end).getField(),
+                                "message longer than " + WireLimits.MAX_MESSAGE_BYTES + " bytes");
                     }
-                    incomplete = e.getMessage();
                     break;
-                } catch (RuntimeException | Error e) {
-                    // A handler failed: the message was read whole before it was dispatched.
-                    at = end - window.available();
-                    throw e;
                 }
-                at = end - window.available();
+                int from = at;
+                // The message counts as consumed even if its handler throws.
+                at += size;
+                readMessage(new WireIn(new DataInputStream(new ByteArrayInputStream(buffer, from, size))));
             }
         } finally {
             if (inPlace) {
@@ -272,6 +270,27 @@ public class RsConnection extends RsProtocol implements Runnable {
                 feed.consume(at - start);
             }
         }
+    }
+
+    /**
+     * Beyond RP1 0.60: the bytes of a message that has begun to arrive but is not yet complete (0
+     * between messages), for a server that budgets what each client may make it hold.
+     */
+    public int getIncompleteMessageBytes() {
+        return feed.length;
+    }
+
+    /**
+     * Where the incomplete message in {@code b[at..end)} breaks off: decoding it as far as it goes
+     * names the field. If those bytes already break the protocol, that is thrown instead.
+     */
+    private TruncatedMessageException truncation(byte[] b, int at, int end) throws IOException {
+        try {
+            readMessage(new WireIn(new DataInputStream(new ByteArrayInputStream(b, at, end - at))));
+        } catch (TruncatedMessageException e) {
+            return e;
+        }
+        throw new IllegalStateException("an incomplete message of " + (end - at) + " bytes decoded whole");
     }
 
     /**
@@ -284,7 +303,7 @@ public class RsConnection extends RsProtocol implements Runnable {
         String problem;
         try {
             receive(NO_BYTES, 0, 0);
-            problem = feed.length > 0 ? incomplete : null;
+            problem = feed.length > 0 ? truncation(feed.bytes, 0, feed.length).getMessage() : null;
         } catch (IOException e) {
             problem = e.getMessage();
         } catch (RuntimeException | Error e) {

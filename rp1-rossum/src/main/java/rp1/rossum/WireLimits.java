@@ -25,8 +25,7 @@ final class WireLimits {
     static final int MAX_ENCODERS = 4096;
     /**
      * The longest message a non-blocking reader keeps waiting for the rest of (a body of thousands of
-     * parts is far shorter); each arrival re-reads the incomplete message, so the bound also bounds
-     * that work.
+     * parts is far shorter), so that what one client makes a server hold stays bounded.
      */
     static final int MAX_MESSAGE_BYTES = 4 << 20;
 

@@ -14,6 +14,7 @@ import rp1.simulator.scheduler.InputQueue;
 import rp1.simulator.scheduler.Interlock;
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
+import rp1.simulator.session.ClientBudgets;
 import rp1.simulator.session.ClientInput;
 import rp1.simulator.session.ClientSession;
 import rp1.simulator.session.Heartbeats;
@@ -65,6 +66,7 @@ public final class Simulation {
     private int placedRobots;
     private boolean robotsPlacedSoFar;
     private volatile Runnable whenDeserted = () -> { };
+    private volatile ClientBudgets clientBudgets = ClientBudgets.DEFAULTS;
 
     public Simulation(RsPlan plan, SimulationSettings settings, RsLogInterface log) {
         this.settings = settings;
@@ -87,6 +89,11 @@ public final class Simulation {
     private static String describe(Throwable t) {
         StackTraceElement[] trace = t.getStackTrace();
         return t + (trace.length > 0 ? " at " + trace[0] : "");
+    }
+
+    /** What each client attached from now on may make the server hold (default {@link ClientBudgets#DEFAULTS}). */
+    public void setClientBudgets(ClientBudgets budgets) {
+        clientBudgets = budgets;
     }
 
     public Scheduler getScheduler() {
@@ -304,6 +311,11 @@ public final class Simulation {
         @Override
         public RsLogInterface log() {
             return log;
+        }
+
+        @Override
+        public ClientBudgets budgets() {
+            return clientBudgets;
         }
 
         @Override

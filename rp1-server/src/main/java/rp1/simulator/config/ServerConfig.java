@@ -9,12 +9,15 @@ import java.util.OptionalLong;
 import java.util.Properties;
 import java.util.SortedMap;
 
+import rp1.simulator.session.ClientBudgets;
+
 /**
  * The server's settings, read from an RP1.ini-style properties file (behavior.md section 2.2, with
  * the user's guide's spellings {@code enableInterlock} and {@code dlcSetLogger} accepted as aliases)
  * plus the keys this implementation adds: {@code bindAddress}, {@code simulationSpeed=max},
  * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
- * {@code clientQueueLimit}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
+ * {@code clientQueueLimit}, {@code clientOutputBudget}, {@code clientTimeoutBudget},
+ * {@code clientSubscriptionBudget}, {@code clientMessageBudget}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
  * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName} and {@code eventLogFileName}
  * (docs/properties.md). Immutable; built
  * by {@link #from}, which validates every value.
@@ -58,6 +61,14 @@ public final class ServerConfig {
     public final double connectTimeout;
     /** Events that may wait for a slow client before it is disconnected. */
     public final int clientQueueLimit;
+    /** Bytes of events that may wait for a slow client before it is disconnected. */
+    public final int clientOutputBudget;
+    /** Bytes a client's pending timeouts may count (256 each) before it is disconnected. */
+    public final int clientTimeoutBudget;
+    /** Bytes a client's subscriptions may count (128 each) before it is disconnected. */
+    public final int clientSubscriptionBudget;
+    /** Bytes of a client's message that has begun to arrive, beyond which it is disconnected. */
+    public final int clientMessageBudget;
     /** Where to write pictures of the world, or null. */
     public final String snapshotFileName;
     /** Simulated seconds between pictures (0: only at exit). */
@@ -115,6 +126,12 @@ public final class ServerConfig {
         maxSimulationTime = r.real("maxSimulationTime", Double.POSITIVE_INFINITY, 0.0, Double.POSITIVE_INFINITY);
         connectTimeout = r.real("connectTimeout", 10.0, 0.001, 86400.0);
         clientQueueLimit = r.integer("clientQueueLimit", 10000, 16, Integer.MAX_VALUE);
+        ClientBudgets budgets = ClientBudgets.DEFAULTS;
+        clientOutputBudget = r.integer("clientOutputBudget", budgets.output, 64 << 10, Integer.MAX_VALUE);
+        clientTimeoutBudget = r.integer("clientTimeoutBudget", budgets.timeouts, 4 << 10, Integer.MAX_VALUE);
+        clientSubscriptionBudget = r.integer("clientSubscriptionBudget", budgets.subscriptions, 4 << 10,
+                Integer.MAX_VALUE);
+        clientMessageBudget = r.integer("clientMessageBudget", budgets.message, 64 << 10, budgets.message);
         snapshotFileName = r.string("snapshotFileName");
         snapshotInterval = r.real("snapshotInterval", 0.0, 0.0, Double.POSITIVE_INFINITY);
         robotsInteract = r.bool(true, "robotsInteract");
@@ -152,6 +169,11 @@ public final class ServerConfig {
             throw new ConfigException(where + "simulationSpeed=max needs interlockEnabled=true "
                     + "(without the interlock nothing would hold simulated time back for the clients)");
         }
+    }
+
+    /** What each client may make the server hold. */
+    public ClientBudgets clientBudgets() {
+        return new ClientBudgets(clientOutputBudget, clientTimeoutBudget, clientSubscriptionBudget, clientMessageBudget);
     }
 
     /**

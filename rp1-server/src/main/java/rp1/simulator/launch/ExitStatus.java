@@ -14,6 +14,12 @@ public final class ExitStatus {
      * names the file; nothing half-written is left under a file's own name.
      */
     public static final int OUTPUT_FAILED = 4;
+    /**
+     * An {@code Error} (running out of memory, say) ended a thread of the server: the server cannot
+     * be trusted to serve anyone, so the process ends rather than keep the port open (70 is
+     * sysexits' EX_SOFTWARE, an internal error).
+     */
+    public static final int FATAL_ERROR = 70;
 
     private ExitStatus() {
     }

@@ -128,6 +128,7 @@ public final class ServerLauncher {
         RsPlan plan = parse(config, text);
         log.log("randomSeed=" + seed + (config.randomSeed.isPresent() ? "" : "; set it to repeat this run"));
         Simulation simulation = new Simulation(plan, SimulationSettings.of(config, seed), log);
+        simulation.setClientBudgets(config.clientBudgets());
         log.setSimTime(simulation.getScheduler()::recordedTime);
         if (config.waitForClients > 0) {
             log.log("Simulated time waits until " + config.waitForClients + " robot" + (config.waitForClients == 1 ? " is" : "s are")
@@ -188,7 +189,7 @@ public final class ServerLauncher {
         int port = options.port.orElse(config.port);
         try {
             ClientListener listener = ClientListener.bind(config.bindAddress, port, simulation, registry, log,
-                    new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit));
+                    new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit, config.clientBudgets()));
             log.log("Socket ready: " + config.bindAddress + ":" + listener.getPort());
             return listener;
         } catch (IOException e) {

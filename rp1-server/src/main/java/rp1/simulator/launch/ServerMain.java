@@ -9,14 +9,20 @@ import rp1.simulator.config.ServerArguments;
 /**
  * What {@code rp1.Server.main} does: start a server in the working directory, stop it cleanly on
  * Ctrl-C or SIGTERM (clients closed, log flushed), and return the exit status. A server that cannot
- * start prints one line saying why on standard error.
+ * start prints one line saying why on standard error; an {@code Error} on any thread (out of memory,
+ * say) ends the process with a message and {@link ExitStatus#FATAL_ERROR} rather than leave it
+ * holding the port while serving nobody.
  */
 public final class ServerMain {
     private ServerMain() {
     }
 
-    /** Runs a server until it stops; returns the process's exit status. */
+    /**
+     * Runs a server until it stops; returns the process's exit status. An {@code Error} on any thread
+     * ends the process with {@link ExitStatus#FATAL_ERROR}.
+     */
     public static int run(String[] args) {
+        FatalErrors.install();
         try {
             if (ServerArguments.parse(args).help) {
                 System.out.println(ServerArguments.USAGE);

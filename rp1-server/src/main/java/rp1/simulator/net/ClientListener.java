@@ -19,6 +19,7 @@ import java.util.List;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
+import rp1.simulator.session.ClientBudgets;
 
 /**
  * The network clients (docs/behavior.md section 3.3, docs/protocol.md section 4): one thread, the
@@ -34,6 +35,11 @@ import rp1.simulator.Simulation;
  * before anyone else's bytes: a robot whose client has gone leaves the world before any request that
  * reached the server after it (the simulation applies departures first at every boundary).
  *
+ * <p>When accepting fails (the process has run out of file descriptors, say) the waiting connection
+ * stays ready, so trying again at once would spin: accepting pauses for {@value #ACCEPT_PAUSE_MILLIS}
+ * ms after each failure, and the failures are logged at most once a second. A client whose incomplete
+ * message grows beyond its budget ({@code clientMessageBudget}) is disconnected.
+ *
  * <p>Sockets are non-blocking channels with Nagle's algorithm off: events go out at once from the
  * thread that sends them while the client keeps up, and through its {@link OutboundQueue} when not.
  */
@@ -41,6 +47,14 @@ public final class ClientListener {
     private static final int READ_BUFFER_BYTES = 64 * 1024;
     /** Bytes read from one client per round before the others get their turn. */
     private static final int MAX_BYTES_PER_ROUND = 256 * 1024;
+    static final long ACCEPT_PAUSE_MILLIS = 100;
+    private static final long ACCEPT_LOG_INTERVAL_NANOS = 1_000_000_000L;
+
+    /** Takes the next waiting connection, or null if none waits; a seam for tests of failing accepts. */
+    @FunctionalInterface
+    interface Acceptor {
+        SocketChannel accept(ServerSocketChannel server) throws IOException;
+    }
 
     private final ServerSocketChannel serverSocket;
     private final Selector selector;
@@ -49,33 +63,64 @@ public final class ClientListener {
     private final RsLogInterface log;
     private final long connectTimeoutNanos;
     private final int queueLimit;
+    private final ClientBudgets budgets;
+    private final Acceptor acceptor;
+    /** When accepting may start again after a failure (System.nanoTime), or 0 while it is not paused. */
+    private long acceptPausedUntil;
+    /** When a failure to accept was last logged, and how many failed since without a line. */
+    private long acceptFailureLogged;
+    private int acceptFailuresUnlogged;
     private final ByteBuffer readBuffer = ByteBuffer.allocate(READ_BUFFER_BYTES);
     private final List<Peer> introducing = new ArrayList<>();
     private volatile boolean closed;
 
     private ClientListener(ServerSocketChannel serverSocket, Selector selector, Simulation simulation,
-                           ClientRegistry clients, RsLogInterface log, long connectTimeoutNanos, int queueLimit) {
+                           ClientRegistry clients, RsLogInterface log, Settings settings) {
         this.serverSocket = serverSocket;
         this.selector = selector;
         this.simulation = simulation;
         this.clients = clients;
         this.log = log;
-        this.connectTimeoutNanos = connectTimeoutNanos;
-        this.queueLimit = queueLimit;
+        this.connectTimeoutNanos = Math.max(1L, Math.round(settings.connectTimeout * 1.0e9));
+        this.queueLimit = settings.queueLimit;
+        this.budgets = settings.budgets;
+        this.acceptor = settings.acceptor;
     }
 
     /** What a listener needs besides its address. */
     public static final class Settings {
         final double connectTimeout;
         final int queueLimit;
+        final ClientBudgets budgets;
+        final Acceptor acceptor;
 
         /**
          * @param connectTimeout seconds a new connection may take to send CONNECT
          * @param queueLimit     events that may wait for a client before it is disconnected
          */
         public Settings(double connectTimeout, int queueLimit) {
+            this(connectTimeout, queueLimit, ClientBudgets.DEFAULTS);
+        }
+
+        /**
+         * @param connectTimeout seconds a new connection may take to send CONNECT
+         * @param queueLimit     events that may wait for a client before it is disconnected
+         * @param budgets        what each client may make the server hold
+         */
+        public Settings(double connectTimeout, int queueLimit, ClientBudgets budgets) {
+            this(connectTimeout, queueLimit, budgets, ServerSocketChannel::accept);
+        }
+
+        private Settings(double connectTimeout, int queueLimit, ClientBudgets budgets, Acceptor acceptor) {
             this.connectTimeout = connectTimeout;
             this.queueLimit = queueLimit;
+            this.budgets = budgets;
+            this.acceptor = acceptor;
+        }
+
+        /** The same settings, taking connections with {@code a} (tests make accepting fail). */
+        Settings withAcceptor(Acceptor a) {
+            return new Settings(connectTimeout, queueLimit, budgets, a);
         }
     }
 
@@ -101,8 +146,7 @@ public final class ClientListener {
             }
             throw e;
         }
-        long timeout = Math.max(1L, Math.round(settings.connectTimeout * 1.0e9));
-        return new ClientListener(s, selector, simulation, clients, log, timeout, settings.queueLimit);
+        return new ClientListener(s, selector, simulation, clients, log, settings);
     }
 
     /** The port clients connect to. */
@@ -149,9 +193,9 @@ public final class ClientListener {
         }
     }
 
-    /** Until the next handshake falls due, at most a second; 0 would mean for ever. */
+    /** Until the next handshake falls due or accepting resumes, at most a second; 0 would mean for ever. */
     private long selectTimeoutMillis() {
-        long next = Long.MAX_VALUE;
+        long next = acceptPausedUntil != 0 ? acceptPausedUntil : Long.MAX_VALUE;
         for (Peer p : introducing) {
             next = Math.min(next, p.deadline);
         }
@@ -166,6 +210,7 @@ public final class ClientListener {
      * clients whose input ended first; then run what is due.
      */
     private void round() throws IOException {
+        resumeAccepting();
         List<Peer> ready = new ArrayList<>();
         Iterator<SelectionKey> keys = selector.selectedKeys().iterator();
         while (keys.hasNext()) {
@@ -200,10 +245,10 @@ public final class ClientListener {
         while (true) {
             SocketChannel channel;
             try {
-                channel = serverSocket.accept();
+                channel = acceptor.accept(serverSocket);
             } catch (IOException e) {
                 if (!closed) {
-                    log.logIt("X", "Accepting a connection failed: " + e.getMessage());
+                    acceptFailed(e);
                 }
                 return;
             }
@@ -211,6 +256,32 @@ public final class ClientListener {
                 return;
             }
             accepted(channel);
+        }
+    }
+
+    /**
+     * The connection that could not be accepted still waits, and the selector would report it again
+     * at once: stop asking for it for a while, and log the failure at most once a second.
+     */
+    private void acceptFailed(IOException e) {
+        long now = System.nanoTime();
+        serverSocket.keyFor(selector).interestOps(0);
+        acceptPausedUntil = now + ACCEPT_PAUSE_MILLIS * 1_000_000L;
+        if (acceptFailureLogged != 0 && now - acceptFailureLogged < ACCEPT_LOG_INTERVAL_NANOS) {
+            acceptFailuresUnlogged++;
+            return;
+        }
+        String more = acceptFailuresUnlogged == 0 ? "" : " (" + acceptFailuresUnlogged + " more failures since the last line)";
+        log.logIt("X", "Accepting a connection failed: " + e.getMessage() + more + "; trying again every "
+                + ACCEPT_PAUSE_MILLIS + " ms");
+        acceptFailureLogged = now;
+        acceptFailuresUnlogged = 0;
+    }
+
+    private void resumeAccepting() {
+        if (acceptPausedUntil != 0 && System.nanoTime() - acceptPausedUntil >= 0) {
+            acceptPausedUntil = 0;
+            serverSocket.keyFor(selector).interestOps(SelectionKey.OP_ACCEPT);
         }
     }
 
@@ -231,8 +302,8 @@ public final class ClientListener {
         try {
             channel.configureBlocking(false);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
-            OutboundQueue out = OutboundQueue.start(new ChannelTransport(channel), queueLimit, "writer " + description,
-                    c::close);
+            OutboundQueue out = OutboundQueue.start(new ChannelTransport(channel), queueLimit, budgets.output,
+                    "writer " + description, c::close);
             c.setInputOutputStreams(null, out);
             simulation.attach(c, description, Simulation.Link.SHARED_READER);
             Peer p = new Peer(channel, c, System.nanoTime() + connectTimeoutNanos);
@@ -286,6 +357,7 @@ public final class ClientListener {
         try {
             for (byte[] chunk : p.unread) {
                 c.receive(chunk, 0, chunk.length);
+                checkMessageBudget(c);
             }
         } catch (IOException e) {
             String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
@@ -319,6 +391,15 @@ public final class ClientListener {
                 handshakeFailed(p, "the connection closed before CONNECT");
             }
             closeQuietly(p.channel);
+        }
+    }
+
+    /** A client whose incomplete message has outgrown its budget is refused like a protocol error. */
+    private void checkMessageBudget(ClientConnection c) throws IOException {
+        int held = c.getIncompleteMessageBytes();
+        if (held > budgets.message) {
+            throw new IOException("over budget: an incomplete message of " + held + " bytes, the budget is "
+                    + budgets.message + " (clientMessageBudget)");
         }
     }
 

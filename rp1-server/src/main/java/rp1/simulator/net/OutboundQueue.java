@@ -18,7 +18,8 @@ import java.util.Arrays;
  * transport, several at a time when they pile up.
  *
  * <p>So the thread that sends an event (the scheduler, mostly) never waits for the client. When more
- * than {@code limit} messages are waiting, the client is not keeping up: the queue closes, reports
+ * than {@code limit} messages, or more than {@code byteBudget} bytes, are waiting (one message may
+ * always wait, whatever its size), the client is not keeping up: the queue closes, reports
  * the failure (the connection is then closed and the client's robot leaves the world) and the flush
  * fails. A failing transport is reported the same way.
  */
@@ -34,6 +35,7 @@ public final class OutboundQueue extends OutputStream {
 
     private final Transport transport;
     private final int limit;
+    private final int byteBudget;
     private final FailureHandler onFailure;
     private final String threadName;
     private boolean writerStarted;
@@ -42,14 +44,20 @@ public final class OutboundQueue extends OutputStream {
     private int messageLength;
     /** Messages not yet wholly handed to the transport, including those the writer is writing. */
     private int waiting;
+    /** Bytes of the messages not yet wholly handed to the transport. */
+    private long waitingBytes;
     private boolean closed;
 
-    private OutboundQueue(Transport transport, int limit, String threadName, FailureHandler onFailure) {
+    private OutboundQueue(Transport transport, int limit, int byteBudget, String threadName, FailureHandler onFailure) {
         if (limit < 1) {
             throw new IllegalArgumentException("limit must be positive, got " + limit);
         }
+        if (byteBudget < 1) {
+            throw new IllegalArgumentException("byteBudget must be positive, got " + byteBudget);
+        }
         this.transport = transport;
         this.limit = limit;
+        this.byteBudget = byteBudget;
         this.onFailure = onFailure;
         this.threadName = threadName;
     }
@@ -64,7 +72,17 @@ public final class OutboundQueue extends OutputStream {
      *                   transport fails
      */
     public static OutboundQueue start(Transport transport, int limit, String threadName, FailureHandler onFailure) {
-        return new OutboundQueue(transport, limit, threadName, onFailure);
+        return start(transport, limit, Integer.MAX_VALUE, threadName, onFailure);
+    }
+
+    /**
+     * Creates a queue in front of {@code transport} that also gives the client up when more than
+     * {@code byteBudget} bytes wait for it ({@code clientOutputBudget}); see
+     * {@link #start(Transport, int, String, FailureHandler)}.
+     */
+    public static OutboundQueue start(Transport transport, int limit, int byteBudget, String threadName,
+                                      FailureHandler onFailure) {
+        return new OutboundQueue(transport, limit, byteBudget, threadName, onFailure);
     }
 
     @Override
@@ -116,8 +134,15 @@ public final class OutboundQueue extends OutputStream {
                 closeQueue();
                 return "not reading: " + waiting + " messages waiting, the limit is " + limit + " (clientQueueLimit)";
             }
+            int rest = messageLength - sent;
+            if (waiting > 0 && waitingBytes + rest > byteBudget) {
+                closeQueue();
+                return "not reading: " + (waitingBytes + rest) + " bytes of events waiting, the budget is "
+                        + byteBudget + " (clientOutputBudget)";
+            }
             queue.addLast(Arrays.copyOfRange(message, sent, messageLength));
             waiting++;
+            waitingBytes += rest;
             startWriter();
             notifyAll();
         }
@@ -189,7 +214,7 @@ public final class OutboundQueue extends OutputStream {
                 if (n > 0) {
                     transport.write(batch, 0, n);
                 }
-                written(messages.length);
+                written(messages);
             }
         } catch (IOException e) {
             writeFailed(e);
@@ -211,8 +236,11 @@ public final class OutboundQueue extends OutputStream {
         return messages;
     }
 
-    private synchronized void written(int count) {
-        waiting -= count;
+    private synchronized void written(byte[][] messages) {
+        waiting -= messages.length;
+        for (byte[] m : messages) {
+            waitingBytes -= m.length;
+        }
     }
 
     private void writeFailed(IOException e) {

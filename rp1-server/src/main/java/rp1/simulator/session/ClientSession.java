@@ -3,6 +3,8 @@ package rp1.simulator.session;
 import java.util.HashSet;
 import java.util.Set;
 import java.util.function.BooleanSupplier;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsConnection;
@@ -77,6 +79,9 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
 
         RsLogInterface log();
 
+        /** What a client may make the server hold. */
+        ClientBudgets budgets();
+
         /** Queues a request of {@code session} for the next boundary. */
         void submit(ClientSession session, Request request);
 
@@ -96,6 +101,14 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     private final RsConnection connection;
     private final Subscriptions subscriptions = new Subscriptions();
     private final Set<TimeoutTask> timeouts = new HashSet<>();
+    private final ClientBudgets budgets;
+    /** Timeouts asked for that have not fallen due: waiting for a boundary or scheduled. */
+    private final AtomicInteger timeoutsHeld = new AtomicInteger();
+    /** Subscription requests waiting for a boundary. */
+    private final AtomicInteger subscriptionsWaiting = new AtomicInteger();
+    /** The size of {@link #subscriptions}, published by the thread running tasks. */
+    private volatile int subscriptionsHeld;
+    private final AtomicBoolean overBudget = new AtomicBoolean();
     private Robot robot;
     private boolean departed;
     private TaskHandle startMotion = TaskHandle.NONE;
@@ -116,6 +129,7 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         this.scheduler = host.scheduler();
         this.log = host.log();
         this.connection = connection;
+        this.budgets = host.budgets();
         register(connection);
     }
 
@@ -197,12 +211,32 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
 
     @Override
     public void process(double duration, int timeoutIndex) {
-        submit(new Request.Timeout(duration, timeoutIndex));
+        if (withinBudget(ClientBudgets.over(timeoutsHeld.incrementAndGet(), "pending timeouts",
+                ClientBudgets.TIMEOUT_BYTES, budgets.timeouts, "clientTimeoutBudget"))) {
+            submit(new Request.Timeout(duration, timeoutIndex));
+        }
     }
 
     @Override
     public void process(RsSubscriptionRequest r) {
-        submit(new Request.Subscription(r.eventCode, r.eventIndex, r.eventEnable));
+        if (withinBudget(ClientBudgets.over(subscriptionsWaiting.incrementAndGet() + subscriptionsHeld,
+                "subscriptions", ClientBudgets.SUBSCRIPTION_BYTES, budgets.subscriptions, "clientSubscriptionBudget"))) {
+            submit(new Request.Subscription(r.eventCode, r.eventIndex, r.eventEnable));
+        }
+    }
+
+    /**
+     * Whether a request may be queued: {@code over} is null. Otherwise the client has asked the server
+     * to hold more than its budget: it is disconnected (once), naming the budget.
+     */
+    private boolean withinBudget(String over) {
+        if (over == null) {
+            return true;
+        }
+        if (overBudget.compareAndSet(false, true)) {
+            connection.inputFailed("over budget: " + over);
+        }
+        return false;
     }
 
     @Override
@@ -323,6 +357,8 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
 
     void subscription(Request.Subscription r) {
         subscriptions.set(r.code(), r.index(), r.enable());
+        subscriptionsHeld = subscriptions.size();
+        subscriptionsWaiting.decrementAndGet();
     }
 
     void timeout(Request.Timeout r, double now) {
@@ -343,6 +379,7 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         @Override
         public void run(double time) {
             timeouts.remove(this);
+            timeoutsHeld.decrementAndGet();
             send(new RsTimeoutEvent(time, index));
         }
     }

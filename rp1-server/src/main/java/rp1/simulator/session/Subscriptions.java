@@ -27,6 +27,11 @@ final class Subscriptions {
         }
     }
 
+    /** How many (code, index) pairs are wanted. */
+    int size() {
+        return wanted.size();
+    }
+
     boolean isSubscribed(int code, int index) {
         return wanted.contains(key(code, index));
     }

@@ -113,7 +113,7 @@ final class RawClient implements AutoCloseable {
         out.writeInt(b);
     }
 
-    private void request(int code) throws IOException {
+    void request(int code) throws IOException {
         header(REQUEST);
         out.writeInt(code);
         out.writeInt(0);

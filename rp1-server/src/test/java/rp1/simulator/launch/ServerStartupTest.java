@@ -54,7 +54,7 @@ class ServerStartupTest {
     @Test
     void aBadValueNamesTheFileTheKeyAndTheValueAndNothingStarts() {
         for (String bad : new String[] {"port=77x", "simulationSpeed=5000", "logToFile=yes", "modelingFrameRate=fast",
-                                         "clientQueueLimit=0"}) {
+                                         "clientQueueLimit=0", "clientMessageBudget=5000000", "clientTimeoutBudget=-1"}) {
             StartupException e = assertThrows(StartupException.class, () -> TestServer.start(dir, bad));
             String key = bad.substring(0, bad.indexOf('='));
             String value = bad.substring(bad.indexOf('=') + 1);

@@ -72,6 +72,36 @@ class OutboundQueueTest {
     }
 
     @Test
+    void aReaderThatStopsReadingIsCutOffOnceTheBytesWaitingPassTheBudget() throws Exception {
+        RsPipe nobodyReads = new RsPipe(64);
+        OutboundQueue q = OutboundQueue.start(Transport.of(nobodyReads), 10000, 4096, "writer test", failures::add);
+        byte[] message = new byte[1000];
+        int sent = 0;
+        try {
+            for (; sent < 100; sent++) {
+                q.write(message);
+                q.flush();
+            }
+        } catch (IOException cutOff) {
+            assertTrue(cutOff.getMessage().contains("bytes of events waiting, the budget is 4096 (clientOutputBudget)"),
+                    cutOff.getMessage());
+        }
+        assertTrue(sent >= 4 && sent <= 6, "cut off after about 4 KB, not 10000 messages: " + sent);
+        assertEquals(1, failures.size(), "reported once: " + failures);
+    }
+
+    @Test
+    void oneMessageLargerThanTheBudgetMayStillWait() throws Exception {
+        RsPipe slow = new RsPipe(64);
+        OutboundQueue q = OutboundQueue.start(Transport.of(slow), 10000, 4096, "writer test", failures::add);
+        q.write(new byte[10000]);
+        q.flush();
+        assertEquals(1, q.getWaiting());
+        assertEquals(List.of(), failures);
+        q.close();
+    }
+
+    @Test
     void aFailingStreamIsReportedAndLaterWritesFail() throws Exception {
         OutputStream broken = new OutputStream() {
             @Override
