@@ -21,8 +21,8 @@ public class RsProperties extends Properties {
 
     /** Name of the client properties file, in the working directory or as a resource. */
     public static final String FILE_NAME = "rossum.ini";
-    public static final int MIN_PORT = 1025;
-    public static final int MAX_PORT = 32767;
+    public static final int MIN_PORT = 1;
+    public static final int MAX_PORT = 65535;
 
     public int port;
     public String hostName;

@@ -59,6 +59,7 @@ public final class ServerLauncher {
         RunningServer.Parts parts;
         try {
             log.important("STARTING SIMULATOR SESSION");
+            config.warnings.forEach(log::important);
             ResourceLocator.Found planText = readPlan(config, locator, log);
             long seed = config.randomSeed.orElse(System.nanoTime());
             Simulation simulation = simulate(config, planText, seed, log);
