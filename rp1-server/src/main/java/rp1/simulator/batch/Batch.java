@@ -1,5 +1,6 @@
 package rp1.simulator.batch;
 
+import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -18,6 +19,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
@@ -25,8 +27,10 @@ import rp1.rossum.RsPlan;
 import rp1.simulator.config.ConfigException;
 import rp1.simulator.config.ResourceLocator;
 import rp1.simulator.config.ServerConfig;
+import rp1.simulator.launch.ClientClassPath;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.JavaCommand;
+import rp1.simulator.launch.StartupException;
 
 /**
  * Runs a server's properties over several seeds and floor plans, each (seed, plan) a headless world
@@ -50,6 +54,7 @@ public final class Batch {
     private final String propertiesText;
     private final Map<String, RsPlan> plans;
     private final List<Run> runs;
+    private final List<Path> classPath;
 
     /** One (seed, plan) of the sweep and the folder it runs in. */
     public record Run(long seed, String plan, Path dir) {
@@ -59,12 +64,14 @@ public final class Batch {
     public record Outcome(Run run, RunReport report, double wallSeconds, List<Trail> trails) {
     }
 
-    private Batch(SweepOptions options, Path out, String propertiesText, Map<String, RsPlan> plans, List<Run> runs) {
+    private Batch(SweepOptions options, Path out, String propertiesText, Map<String, RsPlan> plans, List<Run> runs,
+                  List<Path> classPath) {
         this.options = options;
         this.out = out;
         this.propertiesText = propertiesText;
         this.plans = plans;
         this.runs = runs;
+        this.classPath = classPath;
     }
 
     /**
@@ -77,6 +84,7 @@ public final class Batch {
     public static Batch prepare(SweepOptions options, Path workingDirectory, ClassLoader loader) throws SweepException {
         ResourceLocator locator = new ResourceLocator(workingDirectory, loader);
         try {
+            List<Path> classPath = ClientClassPath.resolve(options.classPath, workingDirectory);
             ResourceLocator.Found found = locator.properties(options.properties);
             Properties table = ResourceLocator.parseProperties(found);
             ServerConfig config = ServerConfig.from(table, found.location,
@@ -92,10 +100,23 @@ public final class Batch {
                 throw new SweepException("--out " + out + ": the path must not contain white space (a property"
                         + " value ends at the first space, and each run's files are named in its properties)");
             }
-            return new Batch(options, out, found.text, plans, runs(options.seeds, plans.keySet(), out.resolve("runs")));
+            return new Batch(options, out, found.text, plans, runs(options.seeds, plans.keySet(), out.resolve("runs")),
+                    classPath);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());
+        } catch (StartupException e) {
+            throw new SweepException("-cp: " + e.getMessage());
         }
+    }
+
+    /** The run's folder, and the robot's class path made absolute (-cp), for {@link SweepRun}. */
+    private String[] runArguments(Run run) {
+        List<String> args = new ArrayList<>(List.of(run.dir().toAbsolutePath().toString()));
+        if (!classPath.isEmpty()) {
+            args.add("-cp");
+            args.add(classPath.stream().map(Path::toString).collect(Collectors.joining(File.pathSeparator)));
+        }
+        return args.toArray(new String[0]);
     }
 
     /** A run must load its robot, and must end by itself. */
@@ -211,8 +232,8 @@ public final class Batch {
         Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
         Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
         Files.write(run.dir().resolve(SweepRun.PROPERTIES), properties(run).getBytes(StandardCharsets.UTF_8));
-        Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(),
-                run.dir().toAbsolutePath().toString())).redirectErrorStream(true)
+        Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(), runArguments(run)))
+                .redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
         boolean ended;
         try {

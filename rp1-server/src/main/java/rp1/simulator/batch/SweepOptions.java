@@ -8,9 +8,11 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 
+import rp1.simulator.config.ServerArguments;
+
 /**
  * A sweep's command line: {@code -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N]
- * [--timeout S] --out DIR}. Immutable.
+ * [--timeout S] [-cp PATH] --out DIR}. Immutable.
  */
 public final class SweepOptions {
     /** The most runs one sweep may have. */
@@ -29,6 +31,7 @@ public final class SweepOptions {
             "  --jobs N       runs at a time (default: the number of cores)",
             "  --timeout S    wall-clock seconds after which a run is stopped and counted as failed (default 600)",
             "  --out DIR      where results.csv, summary.png and runs/SEED-PLAN/ go (created if need be)",
+            "  -cp PATH       where the robot's classes (dlcName) are, besides the simulator's own (also --classpath)",
             "  -h, --help     print this and exit");
 
     public final String properties;
@@ -38,15 +41,18 @@ public final class SweepOptions {
     public final int jobs;
     public final double timeoutSeconds;
     public final Path out;
+    /** The entries of {@code -cp}, as written (relative to the working directory). */
+    public final List<String> classPath;
 
     private SweepOptions(String properties, List<Long> seeds, List<String> plans, int jobs, double timeoutSeconds,
-                         Path out) {
+                         Path out, List<String> classPath) {
         this.properties = properties;
         this.seeds = Collections.unmodifiableList(seeds);
         this.plans = Collections.unmodifiableList(plans);
         this.jobs = jobs;
         this.timeoutSeconds = timeoutSeconds;
         this.out = out;
+        this.classPath = Collections.unmodifiableList(classPath);
     }
 
     /**
@@ -62,6 +68,7 @@ public final class SweepOptions {
         int jobs = Runtime.getRuntime().availableProcessors();
         double timeout = DEFAULT_TIMEOUT;
         Path out = null;
+        List<String> classPath = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -74,6 +81,7 @@ public final class SweepOptions {
                 case "--jobs" -> jobs = jobs(value(args, ++i, a));
                 case "--timeout" -> timeout = positive(value(args, ++i, a), a, 1.0e7);
                 case "--out" -> out = Paths.get(value(args, ++i, a));
+                case "-cp", "-classpath", "--classpath" -> classPath.addAll(ServerArguments.entries(value(args, ++i, a)));
                 default -> throw new IllegalArgumentException((a.startsWith("-") ? "unknown option " : "unexpected argument ") + a);
             }
         }
@@ -83,7 +91,7 @@ public final class SweepOptions {
         if (seeds.size() * (long) Math.max(1, plans.size()) > MAX_RUNS) {
             throw new IllegalArgumentException("more than " + MAX_RUNS + " runs");
         }
-        return new SweepOptions(properties, seeds, plans, jobs, timeout, out);
+        return new SweepOptions(properties, seeds, plans, jobs, timeout, out, classPath);
     }
 
     private static String value(String[] args, int i, String option) {

@@ -190,6 +190,20 @@ class ServerConfigTest {
     }
 
     @Test
+    void portHeadlessAndClassPathAreTakenFromTheCommandLine() throws Exception {
+        ServerArguments a = ServerArguments.parse(new String[] {"--port", "40100", "--headless", "-cp", "a" + java.io.File.pathSeparator
+                + "b.jar", "--classpath", "c"});
+        assertEquals(40100, a.port.getAsInt());
+        assertTrue(a.headless);
+        assertEquals(List.of("a", "b.jar", "c"), a.classPath);
+        ServerArguments none = ServerArguments.parse(new String[0]);
+        assertFalse(none.port.isPresent());
+        assertFalse(none.headless);
+        ConfigException e = assertThrows(ConfigException.class, () -> ServerArguments.parse(new String[] {"--port", "0"}));
+        assertEquals("--port 0: a port number from 1 to 65535 expected", e.getMessage());
+    }
+
+    @Test
     void helpIsAskedForWithDashHOrDashDashHelp() throws Exception {
         assertTrue(ServerArguments.parse(new String[] {"-h"}).help);
         assertTrue(ServerArguments.parse(new String[] {"--help"}).help);
