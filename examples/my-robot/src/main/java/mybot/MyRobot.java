@@ -25,9 +25,14 @@ public class MyRobot extends RsClient implements RsRunnable {
     static final double SPEED = 0.25;
 
     /** Connects to the simulator named by rossum.ini and the options, and runs until it goes away. */
-    public static void main(String[] args) throws IOException {
+    public static void main(String[] args) {
         MyRobot robot = new MyRobot();
-        robot.initialize(new RsProperties(args));
+        try {
+            robot.initialize(new RsProperties(args));
+        } catch (IOException e) {
+            System.err.println(e.getMessage());
+            System.exit(1);
+        }
         robot.run();
     }
 

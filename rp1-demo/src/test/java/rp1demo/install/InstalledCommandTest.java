@@ -85,6 +85,49 @@ class InstalledCommandTest {
     }
 
     @Test
+    void theTemplateRobotDrivesOverTcpInTheSimulatorStartedWithAPort() throws Exception {
+        Path template = Paths.get(System.getProperty("rp1.root", "..")).resolve("examples/my-robot");
+        assertEquals(0, ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", dir.resolve("classes").toString(),
+                "-cp", System.getProperty("java.class.path"),
+                template.resolve("src/main/java/mybot/MyRobot.java").toString()));
+        Files.copy(template.resolve("rossum.ini"), dir.resolve("rossum.ini"));
+        int port;
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
+            port = s.getLocalPort();
+        }
+        ProcessBuilder b = new ProcessBuilder(Paths.get(INSTALL, "bin", "rp1").toString(), "-p", "network.ini",
+                "--port", Integer.toString(port)).directory(dir.toFile()).redirectErrorStream(true)
+                .redirectOutput(dir.resolve("server.txt").toFile());
+        b.environment().remove("DISPLAY");
+        Process server = b.start();
+        try {
+            awaitText(dir.resolve("server.txt"), "Socket ready: 127.0.0.1:" + port);
+            ProcessBuilder robot = new ProcessBuilder(Paths.get(System.getProperty("java.home"), "bin", "java").toString(),
+                    "-cp", dir.resolve("classes") + java.io.File.pathSeparator + System.getProperty("java.class.path"),
+                    "mybot.MyRobot", "-port", Integer.toString(port)).directory(dir.toFile()).redirectErrorStream(true)
+                    .redirectOutput(dir.resolve("robot.txt").toFile());
+            Process r = robot.start();
+            try {
+                awaitText(dir.resolve("robot.txt"), "stopped at 1.79");
+            } finally {
+                r.destroy();
+            }
+        } finally {
+            server.destroy();
+            server.waitFor(30, TimeUnit.SECONDS);
+        }
+    }
+
+    private static void awaitText(Path file, String text) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (!(Files.exists(file) && Files.readString(file).contains(text))) {
+            assertTrue(System.nanoTime() < deadline, "no \"" + text + "\" in " + file + ":\n"
+                    + (Files.exists(file) ? Files.readString(file) : ""));
+            Thread.sleep(50);
+        }
+    }
+
+    @Test
     void aMissingPropertiesFileIsAnErrorNotTheDemo() throws Exception {
         Result r = rp1("-p", "mybot.ini");
         assertEquals(1, r.status(), r.output());
