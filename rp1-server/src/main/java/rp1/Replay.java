@@ -63,7 +63,7 @@ public final class Replay {
             if (o.snapshot != null) {
                 Renderer renderer = new Renderer(replayer.simulation().getWorld().getPlan());
                 WorldSnapshot snapshot = WorldSnapshot.of(replayer.simulation().getWorld(), outcome.time());
-                Pictures.writePng(Pictures.render(renderer, snapshot), o.snapshot);
+                Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot), o.snapshot);
             }
             return report(recording, outcome, o, out, err);
         } catch (RecordingException | IOException e) {

@@ -14,7 +14,8 @@ import rp1.simulator.snapshot.WorldSnapshot;
 import rp1.simulator.world.World;
 
 /**
- * Writes PNG pictures of the world (plan, trails, robots) without any display: with an interval,
+ * Writes PNG pictures of the world (plan, trails, robots; under them the simulated time and a scale
+ * bar) without any display: with an interval,
  * one at every multiple of the interval of simulated time while the world changes, named
  * {@code NAME-TTTT.TTT.EXT} after the file name given (e.g. {@code run-0012.500.png} for
  * {@code run.png} at 12.5 s); and one at {@link #close()}, under the file name itself.
@@ -87,7 +88,7 @@ public final class SnapshotWriter implements AutoCloseable {
 
     private void write(WorldSnapshot snapshot, Path target) {
         try {
-            Pictures.writePng(Pictures.render(renderer, snapshot), target);
+            Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot), target);
         } catch (IOException | RuntimeException e) {
             log.log("Could not write the picture " + target + ": " + e);
         }

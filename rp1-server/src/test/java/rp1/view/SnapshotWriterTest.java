@@ -60,7 +60,7 @@ class SnapshotWriterTest {
         for (String name : names(dir)) {
             BufferedImage image = ImageIO.read(dir.resolve(name).toFile());
             assertEquals(800, image.getWidth(), name);
-            assertEquals(800, image.getHeight(), name);
+            assertEquals(800 + Pictures.CAPTION_BAND, image.getHeight(), name + ": the plan, and the time and scale under it");
         }
         BufferedImage last = ImageIO.read(file.toFile());
         PixelProbe p = new PixelProbe(last, ViewTransform.fit(plan.getBounds(), 800, 800));
@@ -87,5 +87,13 @@ class SnapshotWriterTest {
         assertEquals(new java.awt.Dimension(800, 800), Pictures.sizeFor(new RsRectangle(-0.025, -0.025, 3.05, 3.05)));
         assertEquals(new java.awt.Dimension(800, 329), Pictures.sizeFor(new RsRectangle(0, 0, 10, 4)));
         assertEquals(new java.awt.Dimension(329, 800), Pictures.sizeFor(new RsRectangle(0, 0, 4, 10)));
+    }
+
+    @Test
+    void theScaleBarHasARoundLength() {
+        assertEquals(1.0, Pictures.roundLength(1.9));
+        assertEquals(2.0, Pictures.roundLength(4.99));
+        assertEquals(5.0, Pictures.roundLength(5.0));
+        assertEquals(0.5, Pictures.roundLength(0.61), 1e-12);
     }
 }
