@@ -8,6 +8,7 @@ import java.util.Locale;
 
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
+import rp1.simulator.batch.RunStatistics;
 import rp1.simulator.record.Recording;
 import rp1.simulator.record.RecordingException;
 import rp1.simulator.record.RecordingReader;
@@ -59,11 +60,12 @@ public final class Replay {
         try {
             Recording recording = RecordingReader.read(o.recording);
             Replayer replayer = Replayer.prepare(recording, o.events, log(err));
+            RunStatistics paths = RunStatistics.watch(replayer.simulation());
             Replayer.Outcome outcome = replayer.run(o.until);
             if (o.snapshot != null) {
                 Renderer renderer = new Renderer(replayer.simulation().getWorld().getPlan());
                 WorldSnapshot snapshot = WorldSnapshot.of(replayer.simulation().getWorld(), outcome.time());
-                Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot), o.snapshot);
+                Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, paths.trails()), o.snapshot);
             }
             return report(recording, outcome, o, out, err);
         } catch (RecordingException | IOException e) {
