@@ -15,7 +15,7 @@ import sys
 from typing import List, Optional, Tuple
 
 import rp1client as rp
-from connection import argument_parser, connect
+from connection import PLACEMENT_REFUSED, argument_parser, connect, run_main
 
 SPEED = 0.25
 BACK_OFF_DELAY = 0.5
@@ -95,7 +95,7 @@ class ClientZero:
         if e.valid:
             say(f'placed at "{e.name}" ({e.x:.3f}, {e.y:.3f}); click to move')
         else:
-            say(f'placement "{e.name}" failed: no such placement, or no room there')
+            say(f'placement "{e.name}" {PLACEMENT_REFUSED}')
 
     def on_halted(self, e: rp.MotionHaltedEvent) -> None:
         say(f"motion halted on {e.why_halted} at ({e.x:.3f}, {e.y:.3f})")
@@ -141,4 +141,4 @@ def main(argv: Optional[List[str]] = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_main(main))

@@ -19,7 +19,7 @@ import sys
 from typing import Callable, List, Optional
 
 import rp1client as rp
-from connection import argument_parser, connect
+from connection import PLACEMENT_REFUSED, argument_parser, connect, run_main
 
 SPEED = 0.25
 CLOSE = 0.3
@@ -90,7 +90,7 @@ class Wanderer:
     def on_placement(self, e: rp.PlacementEvent) -> None:
         self.placed = e.valid
         if not e.valid:
-            print(f"wanderer: placement {e.name!r} failed", file=sys.stderr)
+            print(f"wanderer: placement {e.name!r} {PLACEMENT_REFUSED}", file=sys.stderr)
             self.client.stop()
             return
         self.client.send_heartbeat_request(1.0)
@@ -158,4 +158,4 @@ def main(argv: Optional[List[str]] = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_main(main))

@@ -274,8 +274,8 @@ def test_settings_come_from_rossum_ini(tmp_path, monkeypatch: pytest.MonkeyPatch
 
 def test_a_bad_port_in_rossum_ini_names_key_value_and_file(tmp_path) -> None:
     path = tmp_path / "rossum.ini"
-    path.write_text("port=99\n")
-    with pytest.raises(rp.SettingsError, match=r"port number 99 not in valid range \[1025,32767\] \(.*rossum.ini\)"):
+    path.write_text("port=65536\n")
+    with pytest.raises(rp.SettingsError, match=r"port number 65536 not in valid range \[1,65535\] \(.*rossum.ini\)"):
         rp.ClientSettings.load(str(path))
 
 

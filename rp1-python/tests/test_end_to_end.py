@@ -2,6 +2,8 @@
 
 import math
 import re
+import signal
+import socket
 import subprocess
 import sys
 import threading
@@ -222,6 +224,39 @@ def test_clientzero_asks_for_the_plan_and_is_placed_at_home(rp1_server: LocalSim
         process.terminate()
         process.wait(LIMIT)
     assert lines == ["floor plan 'White Room (RP1 rev. 0.4)'", 'placed at "home" (2.500, 2.500); click to move']
+
+
+def test_ctrl_c_ends_an_example_with_one_line_and_no_traceback(rp1_server: LocalSimulator) -> None:
+    process = subprocess.Popen([sys.executable, str(EXAMPLES_DIR / "clientzero.py"), "--host", rp1_server.host,
+                                "--port", str(rp1_server.port)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True)
+    try:
+        assert process.stdout.readline().startswith("floor plan"), "connected and running"
+        process.send_signal(signal.SIGINT)
+        _, err = process.communicate(timeout=LIMIT)
+    finally:
+        process.kill()
+    assert "Traceback" not in err, err
+    assert process.returncode in (0, 130), err
+
+
+def test_an_example_with_no_simulator_says_so_in_one_line() -> None:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    done = subprocess.run([sys.executable, str(EXAMPLES_DIR / "wanderer.py"), "--host", "127.0.0.1",
+                           "--port", str(port)], capture_output=True, text=True, timeout=LIMIT)
+    assert done.returncode == 1
+    assert done.stderr == (f"wanderer: cannot connect to the RP1 server at 127.0.0.1:{port}: "
+                           "is it running? start one with rp1\n")
+
+
+def test_a_refused_placement_is_reported_with_why_it_may_be(rp1_server: LocalSimulator) -> None:
+    done = subprocess.run([sys.executable, str(EXAMPLES_DIR / "wanderer.py"), "--host", rp1_server.host,
+                           "--port", str(rp1_server.port), "--placement", "nowhere"],
+                          capture_output=True, text=True, timeout=LIMIT)
+    assert done.returncode == 1
+    assert "wanderer: placement 'nowhere' refused: the plan has no placement of that name" in done.stderr
 
 
 def test_without_jars_the_simulator_cannot_start_and_says_how_to_build_them(monkeypatch, tmp_path) -> None:

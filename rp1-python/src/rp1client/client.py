@@ -118,6 +118,9 @@ class Client:
         deadline = None if timeout is None else time.monotonic() + timeout
         try:
             sock = socket.create_connection((self.host, self.port), timeout=timeout)
+        except ConnectionRefusedError as e:
+            raise ConnectionError(f"cannot connect to the RP1 server at {self.host}:{self.port}: "
+                                  "is it running? start one with rp1") from e
         except OSError as e:
             raise ConnectionError(f"cannot connect to the RP1 server at {self.host}:{self.port}: {e}") from e
         self._handshake_deadline = deadline

@@ -15,8 +15,8 @@ from typing import Dict, Optional
 from .errors import SettingsError
 
 FILE_NAME = "rossum.ini"
-MIN_PORT = 1025
-MAX_PORT = 32767
+MIN_PORT = 1
+MAX_PORT = 65535
 
 _SEPARATOR = re.compile(r"\s*[=:]\s*|\s+")
 

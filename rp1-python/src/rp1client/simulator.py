@@ -17,8 +17,8 @@ from typing import Dict, List, Optional, Union
 
 from .client import Client
 
-MIN_PORT = 1025
-MAX_PORT = 32767
+MIN_PORT = 1
+MAX_PORT = 65535
 
 
 def find_classpath(repo_root: Union[str, Path, None] = None) -> str:
@@ -41,8 +41,8 @@ def find_classpath(repo_root: Union[str, Path, None] = None) -> str:
 
 
 def free_port() -> int:
-    """A port free now within 1025..32767, the range the simulator accepts. Port 0 is tried first;
-    as a machine's ephemeral ports may all lie above the range, random ports in it come next."""
+    """A port free now within the range the simulator accepts (every TCP port). Port 0 is tried first;
+    random ports come next."""
     rng = random.Random()
     for attempt in range(1000):
         candidate = 0 if attempt == 0 else rng.randint(MIN_PORT, MAX_PORT)

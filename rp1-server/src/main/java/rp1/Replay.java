@@ -9,6 +9,7 @@ import java.util.Locale;
 
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
+import rp1.simulator.batch.RunStatistics;
 import rp1.simulator.record.Recording;
 import rp1.simulator.record.RecordingException;
 import rp1.simulator.record.RecordingReader;
@@ -67,6 +68,7 @@ public final class Replay {
                         + " while it was being written (the run was killed); it is left out");
             }
             Replayer replayer = Replayer.prepare(recording, o.events, log(err));
+            RunStatistics paths = RunStatistics.watch(replayer.simulation());
             Replayer.Outcome outcome = replayer.run(o.until);
             if (replayer.eventLogFailure() != null) {
                 err.println("rp1.Replay: " + replayer.eventLogFailure());
@@ -75,7 +77,7 @@ public final class Replay {
             if (o.snapshot != null) {
                 Renderer renderer = new Renderer(replayer.simulation().getWorld().getPlan());
                 WorldSnapshot snapshot = WorldSnapshot.of(replayer.simulation().getWorld(), outcome.time());
-                Pictures.writePng(Pictures.render(renderer, snapshot), o.snapshot);
+                Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, paths.trails()), o.snapshot);
             }
             return report(recording, outcome, o, out, err);
         } catch (RecordingException | IOException e) {

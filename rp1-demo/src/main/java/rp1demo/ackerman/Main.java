@@ -11,6 +11,7 @@ import rp1.rossum.event.RsHeartbeatEvent;
 import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.event.RsPlacementEvent;
 import rp1.rossum.event.RsPositionEvent;
+import rp1demo.Standalone;
 import rp1demo.adapter.Poses;
 
 /**
@@ -58,10 +59,8 @@ public class Main extends RsClient implements RsRunnable {
      *
      * @throws IOException if the simulator cannot be reached
      */
-    public static void main(String[] args) throws IOException {
-        Main c = new Main();
-        c.initialize();
-        c.run();
+    public static void main(String[] args) {
+        Standalone.run(new Main());
     }
 
     /** The no-argument constructor the simulator uses to load the class. */

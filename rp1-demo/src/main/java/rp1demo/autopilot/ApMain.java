@@ -3,6 +3,7 @@ package rp1demo.autopilot;
 import java.awt.Color;
 import java.io.IOException;
 
+import rp1demo.Standalone;
 import rp1demo.adapter.ScoutClient;
 import rp1demo.navigation.Move;
 import rp1demo.navigation.NavNetwork;
@@ -21,10 +22,8 @@ public class ApMain extends ScoutClient {
      *
      * @throws IOException if the simulator cannot be reached
      */
-    public static void main(String[] args) throws IOException {
-        ApMain c = new ApMain();
-        c.initialize();
-        c.run();
+    public static void main(String[] args) {
+        Standalone.run(new ApMain());
     }
 
     /** The no-argument constructor the simulator uses to load the class. */

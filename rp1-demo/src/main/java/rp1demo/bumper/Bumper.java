@@ -10,6 +10,7 @@ import rp1.rossum.RsRunnable;
 import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.event.RsPlacementEvent;
 import rp1.rossum.request.RsMotionRequest;
+import rp1demo.Standalone;
 import rp1demo.clientzero.ClientZero;
 
 /**
@@ -41,10 +42,8 @@ public class Bumper extends RsClient implements RsRunnable {
     private double turnSign = 1.0;
 
     /** Connects to a simulator on the network and runs until it goes away. */
-    public static void main(String[] args) throws IOException {
-        Bumper b = new Bumper();
-        b.initialize();
-        b.run();
+    public static void main(String[] args) {
+        Standalone.run(new Bumper());
     }
 
     /** Sends the body (with a green pen), and asks for a random free pose. */

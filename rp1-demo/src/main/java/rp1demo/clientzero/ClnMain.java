@@ -7,6 +7,7 @@ import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.RsClient;
 import rp1.rossum.RsRunnable;
 import rp1.rossum.request.RsMotionRequest;
+import rp1demo.Standalone;
 import rp1demo.navigation.NavNetwork;
 
 /**
@@ -36,10 +37,8 @@ public class ClnMain extends RsClient implements RsRunnable {
      *
      * @throws IOException if the simulator cannot be reached
      */
-    public static void main(String[] args) throws IOException {
-        ClnMain c = new ClnMain();
-        c.initialize();
-        c.run();
+    public static void main(String[] args) {
+        Standalone.run(new ClnMain());
     }
 
     /** The no-argument constructor the simulator uses to load the class. */

@@ -4,6 +4,7 @@ import java.awt.GraphicsEnvironment;
 import java.io.IOException;
 
 import rp1.rossum.RsBodyTargetSensor;
+import rp1demo.Standalone;
 import rp1demo.clientzero.ClnMain;
 
 /**
@@ -23,10 +24,8 @@ public class DemoMain extends ClnMain {
      *
      * @throws IOException if the simulator cannot be reached
      */
-    public static void main(String[] args) throws IOException {
-        DemoMain demo = new DemoMain();
-        demo.initialize();
-        demo.run();
+    public static void main(String[] args) {
+        Standalone.run(new DemoMain());
     }
 
     /** The no-argument constructor the simulator uses to load the class. */

@@ -5,6 +5,7 @@ import java.io.IOException;
 
 import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.event.RsTargetSensorEvent;
+import rp1demo.Standalone;
 import rp1demo.adapter.Poses;
 import rp1demo.adapter.ScoutClient;
 import rp1demo.navigation.NavNetwork;
@@ -28,10 +29,8 @@ public class FfMain extends ScoutClient implements FireFighter.Robot {
      *
      * @throws IOException if the simulator cannot be reached
      */
-    public static void main(String[] args) throws IOException {
-        FfMain c = new FfMain();
-        c.initialize();
-        c.run();
+    public static void main(String[] args) {
+        Standalone.run(new FfMain());
     }
 
     /** The no-argument constructor the simulator uses to load the class. */

@@ -11,6 +11,7 @@ import rp1.rossum.RsRunnable;
 import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.event.RsPaintSensorEvent;
 import rp1.rossum.event.RsPlacementEvent;
+import rp1demo.Standalone;
 
 /**
  * The line tracker's connection to the simulator: it places the robot at "start" on the line and
@@ -38,10 +39,8 @@ public class LtMain extends RsClient implements RsRunnable {
      *
      * @throws IOException if the simulator cannot be reached
      */
-    public static void main(String[] args) throws IOException {
-        LtMain c = new LtMain();
-        c.initialize();
-        c.run();
+    public static void main(String[] args) {
+        Standalone.run(new LtMain());
     }
 
     /** The no-argument constructor the simulator uses to load the class. */

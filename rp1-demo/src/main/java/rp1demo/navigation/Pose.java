@@ -36,8 +36,17 @@ public record Pose(double x, double y, double heading) {
         return r <= -Math.PI ? r + 2.0 * Math.PI : r;
     }
 
+    /**
+     * The pose as the demos log it: the heading counter-clockwise from the x axis, 0 to 360 degrees,
+     * as the simulator's window shows it, whether the event carried it as given in the plan (a
+     * placement at 225) or as the model keeps it (-135 after a motion).
+     */
     @Override
     public String toString() {
-        return String.format(Locale.ROOT, "(%.3f, %.3f) heading %.1f deg", x, y, Math.toDegrees(heading));
+        double degrees = Math.toDegrees(heading) % 360.0;
+        if (degrees < 0.0) {
+            degrees += 360.0;
+        }
+        return String.format(Locale.ROOT, "(%.3f, %.3f) heading %.1f deg", x, y, degrees);
     }
 }

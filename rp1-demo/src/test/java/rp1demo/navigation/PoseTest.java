@@ -16,4 +16,11 @@ class PoseTest {
         assertEquals(Math.PI, Pose.normalize(-Math.PI), 1e-12);
         assertEquals(-0.5, Pose.normalize(2 * Math.PI - 0.5), 1e-12);
     }
+
+    @Test
+    void theLogShowsTheHeadingAsTheWindowDoesFrom0To360() {
+        assertEquals("(2.500, 2.500) heading 225.0 deg", new Pose(2.5, 2.5, Math.toRadians(225)).toString());
+        assertEquals("(2.500, 2.500) heading 225.0 deg", new Pose(2.5, 2.5, Math.toRadians(-135)).toString());
+        assertEquals("(0.000, 0.000) heading 270.0 deg", new Pose(0, 0, Math.toRadians(-450)).toString());
+    }
 }

@@ -4,6 +4,7 @@ import java.io.EOFException;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.net.ConnectException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.file.Files;
@@ -175,7 +176,8 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
             exchangeIntroductions();
         } catch (IOException e) {
             s.close();
-            throw new IOException("cannot connect to the RP1 server at " + p.hostName + ":" + p.port + ": " + e.getMessage(), e);
+            String why = e instanceof ConnectException ? "is it running? start one with rp1" : e.getMessage();
+            throw new IOException("cannot connect to the RP1 server at " + p.hostName + ":" + p.port + ": " + why, e);
         }
         log("Connected to RP1 server at " + p.hostName + ":" + p.port);
     }

@@ -21,10 +21,10 @@ public class RsProperties extends Properties {
 
     /** Name of the client properties file, in the working directory or as a resource. */
     public static final String FILE_NAME = "rossum.ini";
-    /** The lowest port accepted. */
-    public static final int MIN_PORT = 1025;
-    /** The highest port accepted. */
-    public static final int MAX_PORT = 32767;
+    /** The lowest port accepted (RP1 0.60: 1025). */
+    public static final int MIN_PORT = 1;
+    /** The highest port accepted (RP1 0.60: 32767). */
+    public static final int MAX_PORT = 65535;
 
     /** The server's port ({@code port}); 7758 by default. */
     public int port;

@@ -56,8 +56,15 @@ class RsPropertiesTest {
     @Test
     void aPortOutsideTheRangeIsRefused() {
         RsPropertiesException e = assertThrows(RsPropertiesException.class,
-                () -> new RsProperties().load(stream("port=80\n")));
-        assertTrue(e.getMessage().startsWith("Integer port number 80 not in valid range [1025,32767]"), e.getMessage());
+                () -> new RsProperties().load(stream("port=65536\n")));
+        assertTrue(e.getMessage().startsWith("Integer port number 65536 not in valid range [1,65535]"), e.getMessage());
+    }
+
+    @Test
+    void everyTcpPortIsAcceptedAsTheServerAcceptsIt() throws Exception {
+        RsProperties p = new RsProperties();
+        p.load(stream("port=40100\n"));
+        assertEquals(40100, p.port);
     }
 
     @Test

@@ -2,6 +2,7 @@ package rp1.view;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ThreadPoolExecutor;
@@ -9,10 +10,13 @@ import java.util.concurrent.TimeUnit;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
+import rp1.simulator.batch.RunStatistics;
+import rp1.simulator.batch.Trail;
 import rp1.simulator.snapshot.WorldSnapshot;
 
 /**
- * Writes PNG pictures of the world (plan, trails, robots) without any display: with an interval,
+ * Writes PNG pictures of the world (plan, trails, robots, the path each robot took; under them the
+ * simulated time and a scale bar) without any display: with an interval,
  * one at every multiple of the interval of simulated time while the world changes, named
  * {@code NAME-TTTT.TTT.EXT} after the file name given (e.g. {@code run-0012.500.png} for
  * {@code run.png} at 12.5 s); and one at {@link #close()}, under the file name itself.
@@ -39,6 +43,8 @@ public final class SnapshotWriter implements AutoCloseable {
     private final RsLogInterface log;
     private final ThreadPoolExecutor writer;
     private final AutoCloseable observation;
+    /** Where the robots went, for the paths drawn in the pictures. */
+    private final RunStatistics paths;
     private boolean closed;
     private volatile String failure;
 
@@ -63,6 +69,7 @@ public final class SnapshotWriter implements AutoCloseable {
                     t.setDaemon(true);
                     return t;
                 }, new ThreadPoolExecutor.CallerRunsPolicy());
+        this.paths = RunStatistics.watch(simulation);
         this.observation = interval > 0.0 ? simulation.observeChanges(interval, this::picture) : () -> { };
     }
 
@@ -78,17 +85,17 @@ public final class SnapshotWriter implements AutoCloseable {
     /** An interval picture, on the thread running tasks. */
     private synchronized void picture(double simTime) {
         if (!closed) {
-            submit(WorldSnapshot.of(simulation, simTime), fileAt(file, simTime));
+            submit(WorldSnapshot.of(simulation, simTime), paths.trails(), fileAt(file, simTime));
         }
     }
 
-    private void submit(WorldSnapshot snapshot, Path target) {
-        writer.execute(() -> write(snapshot, target));
+    private void submit(WorldSnapshot snapshot, List<Trail> trails, Path target) {
+        writer.execute(() -> write(snapshot, trails, target));
     }
 
-    private void write(WorldSnapshot snapshot, Path target) {
+    private void write(WorldSnapshot snapshot, List<Trail> trails, Path target) {
         try {
-            Pictures.writePng(Pictures.render(renderer, snapshot), target);
+            Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, trails), target);
         } catch (IOException | RuntimeException e) {
             String why = "cannot write the picture " + target + ": " + e.getMessage();
             if (failure == null) {
@@ -117,7 +124,7 @@ public final class SnapshotWriter implements AutoCloseable {
         } catch (Exception e) {
             log.log("Could not stop the interval pictures: " + e);
         }
-        submit(WorldSnapshot.atRecordedTime(simulation), file);
+        submit(WorldSnapshot.atRecordedTime(simulation), paths.trails(), file);
         writer.shutdown();
         try {
             if (!writer.awaitTermination(CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {

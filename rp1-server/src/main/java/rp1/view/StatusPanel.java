@@ -17,12 +17,15 @@ import rp1.simulator.snapshot.WorldSnapshot;
 
 /**
  * The panel below the canvas: a status line with the simulation time and the robots' poses, and
- * the two read-only fields with the floor coordinates under the pointer (behavior.md section 10).
- * Used on the event thread only.
+ * the two read-only fields with the floor coordinates under the pointer (behavior.md section 10),
+ * and beside them how to drive a robot with the mouse. Used on the event thread only.
  */
 final class StatusPanel extends JPanel {
     private static final long serialVersionUID = 1L;
     private static final int READOUT_COLUMNS = 14;
+    /** What the mouse does; a newcomer otherwise finds it only in the guide. */
+    static final String CLICK_HINT = "left-click: send the robot there   right-click: turn it that way"
+            + "   (robots that ask for clicks)";
 
     private final JLabel state = new JLabel(" ");
     private final JTextField x = readOnlyField();
@@ -39,8 +42,13 @@ final class StatusPanel extends JPanel {
         JPanel readouts = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 2));
         readouts.add(x);
         readouts.add(y);
+        JLabel hint = new JLabel(CLICK_HINT);
+        hint.setBorder(BorderFactory.createEmptyBorder(0, 6, 2, 6));
+        JPanel below = new JPanel(new BorderLayout());
+        below.add(readouts, BorderLayout.NORTH);
+        below.add(hint, BorderLayout.SOUTH);
         add(state, BorderLayout.NORTH);
-        add(readouts, BorderLayout.SOUTH);
+        add(below, BorderLayout.SOUTH);
     }
 
     private static JTextField readOnlyField() {

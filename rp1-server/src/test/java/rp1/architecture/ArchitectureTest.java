@@ -30,10 +30,12 @@ class ArchitectureTest {
     /**
      * What the view may use of the server: the simulation (its inputs: mouse clicks, "Remove Paint
      * Trails"; its time; observers), snapshots, and the settings. Not the world, the scheduler, the
-     * sessions or the transports.
+     * sessions or the transports. Pictures draw the paths the robots took from the run statistics'
+     * trails: an observer that changes nothing, as a snapshot is.
      */
     private static final List<String> VIEW_MAY_USE = List.of(
-            "rp1.simulator.Simulation", "rp1.simulator.snapshot", "rp1.simulator.config");
+            "rp1.simulator.Simulation", "rp1.simulator.snapshot", "rp1.simulator.config",
+            "rp1.simulator.batch.RunStatistics", "rp1.simulator.batch.Trail");
     /**
      * The accessors of {@code Simulation} that hand out the model itself. The view reads the floor
      * plan (fixed for the run) through {@code getWorld().getPlan()} and nothing else of them.

@@ -60,7 +60,7 @@ class SnapshotWriterTest {
         for (String name : names(dir)) {
             BufferedImage image = ImageIO.read(dir.resolve(name).toFile());
             assertEquals(800, image.getWidth(), name);
-            assertEquals(800, image.getHeight(), name);
+            assertEquals(800 + Pictures.CAPTION_BAND, image.getHeight(), name + ": the plan, and the time and scale under it");
         }
         BufferedImage last = ImageIO.read(file.toFile());
         PixelProbe p = new PixelProbe(last, ViewTransform.fit(plan.getBounds(), 800, 800));
@@ -87,5 +87,45 @@ class SnapshotWriterTest {
         assertEquals(new java.awt.Dimension(800, 800), Pictures.sizeFor(new RsRectangle(-0.025, -0.025, 3.05, 3.05)));
         assertEquals(new java.awt.Dimension(800, 329), Pictures.sizeFor(new RsRectangle(0, 0, 10, 4)));
         assertEquals(new java.awt.Dimension(329, 800), Pictures.sizeFor(new RsRectangle(0, 0, 4, 10)));
+    }
+
+    @Test
+    void theScaleBarHasARoundLength() {
+        assertEquals(1.0, Pictures.roundLength(1.9));
+        assertEquals(2.0, Pictures.roundLength(4.99));
+        assertEquals(5.0, Pictures.roundLength(5.0));
+        assertEquals(0.5, Pictures.roundLength(0.61), 1e-12);
+    }
+
+    @Test
+    void aPictureOfARunDrawsEachRobotsPathAndItsTimeUnderThePlan() throws Exception {
+        RsPlan plan = rp1.planparser.RsPlanParser.parse("wall s { geometry: 0, 0, 4, 0, 0.02; }\n"
+                + "wall n { geometry: 0, 4, 4, 4, 0.02; }\n", "room");
+        rp1.simulator.batch.Trail path = new rp1.simulator.batch.Trail("r", List.of(new double[] {1.0, 1.0, 3.0, 1.0}));
+        BufferedImage image = Pictures.renderCaptioned(new Renderer(plan),
+                rp1.simulator.snapshot.WorldSnapshot.planOnly(plan), List.of(path));
+        java.awt.Dimension size = Pictures.sizeFor(plan.getBounds());
+        ViewTransform view = ViewTransform.fit(plan.getBounds(), size.width, size.height);
+        assertTrue(inked(image, view.pixelX(2.0), view.pixelY(1.0)), "the path, where the robot went");
+        assertFalse(inked(image, view.pixelX(2.0), view.pixelY(2.0)), "nowhere else");
+        boolean text = false;
+        for (int x = 0; x < 100 && !text; x++) {
+            for (int y = size.height; y < image.getHeight() && !text; y++) {
+                text = image.getRGB(x, y) != Color.white.getRGB();
+            }
+        }
+        assertTrue(text, "the simulated time, written under the plan");
+    }
+
+    /** Whether a pixel within 2 pixels of (px, py) is not white: lines fall on whole pixels near their place. */
+    private static boolean inked(BufferedImage image, double px, double py) {
+        for (int dx = -2; dx <= 2; dx++) {
+            for (int dy = -2; dy <= 2; dy++) {
+                if (image.getRGB((int) Math.round(px) + dx, (int) Math.round(py) + dy) != Color.white.getRGB()) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 }

@@ -1,6 +1,7 @@
 package rp1.view;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
@@ -46,5 +47,23 @@ class StatusTextTest {
         assertEquals("Rossum's Playhouse -- Untitled Plan", SimulatorWindow.title(plan));
         plan.setCaption("White Room (RP1 rev. 0.4)");
         assertEquals("White Room (RP1 rev. 0.4)", SimulatorWindow.title(plan));
+    }
+
+    @Test
+    void theStatusPanelSaysWhatTheMouseDoes() {
+        StatusPanel panel = new StatusPanel(DisplayUnits.METERS);
+        java.util.List<String> labels = new java.util.ArrayList<>();
+        collectLabels(panel, labels);
+        assertTrue(labels.stream().anyMatch(t -> t.startsWith("left-click: send the robot there")), labels.toString());
+    }
+
+    private static void collectLabels(java.awt.Container c, java.util.List<String> into) {
+        for (java.awt.Component child : c.getComponents()) {
+            if (child instanceof javax.swing.JLabel label) {
+                into.add(label.getText());
+            } else if (child instanceof java.awt.Container inner) {
+                collectLabels(inner, into);
+            }
+        }
     }
 }

@@ -1,5 +1,6 @@
 package rp1.simulator.batch;
 
+import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -19,6 +20,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
@@ -26,8 +28,10 @@ import rp1.rossum.RsPlan;
 import rp1.simulator.config.ConfigException;
 import rp1.simulator.config.ResourceLocator;
 import rp1.simulator.config.ServerConfig;
+import rp1.simulator.launch.ClientClassPath;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.JavaCommand;
+import rp1.simulator.launch.StartupException;
 
 /**
  * Runs a server's properties over several seeds and floor plans, each (seed, plan) a headless world
@@ -63,6 +67,7 @@ public final class Batch {
     private final List<Outcome> kept;
     private final Set<Process> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
+    private final List<Path> classPath;
 
     /** One (seed, plan) of the sweep and the folder it runs in. */
     public record Run(long seed, String plan, Path dir) {
@@ -80,7 +85,7 @@ public final class Batch {
     }
 
     private Batch(SweepOptions options, Path out, String propertiesText, Map<String, RsPlan> plans, List<Run> runs,
-                  SweepSpec spec, List<Outcome> kept) {
+                  SweepSpec spec, List<Outcome> kept, List<Path> classPath) {
         this.options = options;
         this.out = out;
         this.propertiesText = propertiesText;
@@ -88,6 +93,7 @@ public final class Batch {
         this.runs = runs;
         this.spec = spec;
         this.kept = kept;
+        this.classPath = classPath;
     }
 
     /**
@@ -101,6 +107,7 @@ public final class Batch {
     public static Batch prepare(SweepOptions options, Path workingDirectory, ClassLoader loader) throws SweepException {
         ResourceLocator locator = new ResourceLocator(workingDirectory, loader);
         try {
+            List<Path> classPath = ClientClassPath.resolve(options.classPath, workingDirectory);
             ResourceLocator.Found found = locator.properties(options.properties);
             Properties table = ResourceLocator.parseProperties(found);
             ServerConfig config = ServerConfig.from(table, found.location,
@@ -122,10 +129,22 @@ public final class Batch {
             SweepSpec spec = SweepSpec.of(found.text, planTexts, options.seeds, options.timeoutSeconds);
             List<Run> runs = runs(options.seeds, plans.keySet(), out.resolve("runs"));
             List<Outcome> kept = options.resume ? kept(out, spec, runs) : List.of();
-            return new Batch(options, out, found.text, plans, runs, spec, kept);
+            return new Batch(options, out, found.text, plans, runs, spec, kept, classPath);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());
+        } catch (StartupException e) {
+            throw new SweepException("-cp: " + e.getMessage());
         }
+    }
+
+    /** The run's folder, and the robot's class path made absolute (-cp), for {@link SweepRun}. */
+    private String[] runArguments(Run run) {
+        List<String> args = new ArrayList<>(List.of(run.dir().toAbsolutePath().toString()));
+        if (!classPath.isEmpty()) {
+            args.add("-cp");
+            args.add(classPath.stream().map(Path::toString).collect(Collectors.joining(File.pathSeparator)));
+        }
+        return args.toArray(new String[0]);
     }
 
     /** A run must load its robot, and must end by itself. */
@@ -314,8 +333,8 @@ public final class Batch {
         Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
         Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
         Files.write(run.dir().resolve(SweepRun.PROPERTIES), properties(run).getBytes(StandardCharsets.UTF_8));
-        Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(),
-                run.dir().toAbsolutePath().toString())).redirectErrorStream(true)
+        Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(), runArguments(run)))
+                .redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
         running.add(p);
         if (stopping) {

@@ -8,9 +8,11 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 
+import rp1.simulator.config.ServerArguments;
+
 /**
  * A sweep's command line: {@code -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N]
- * [--timeout S] --out DIR [--resume]}. Immutable.
+ * [--timeout S] [-cp PATH] --out DIR [--resume]}. Immutable.
  */
 public final class SweepOptions {
     /** The most runs one sweep may have. */
@@ -30,6 +32,7 @@ public final class SweepOptions {
             "  --jobs N       runs at a time (default: the number of cores)",
             "  --timeout S    wall-clock seconds after which a run is stopped and counted as failed (default 600)",
             "  --out DIR      where results.csv, summary.png and runs/SEED-PLAN/ go (created if need be)",
+            "  -cp PATH       where the robot's classes (dlcName) are, besides the simulator's own (also --classpath)",
             "  --resume       go on with the sweep in DIR that was interrupted: run only the runs it has no",
             "                 results for (the other options must be those it was started with)",
             "  -h, --help     print this and exit");
@@ -43,9 +46,11 @@ public final class SweepOptions {
     public final Path out;
     /** Go on with the sweep in {@link #out}: run only what it has no results for. */
     public final boolean resume;
+    /** The entries of {@code -cp}, as written (relative to the working directory). */
+    public final List<String> classPath;
 
     private SweepOptions(String properties, List<Long> seeds, List<String> plans, int jobs, double timeoutSeconds,
-                         Path out, boolean resume) {
+                         Path out, boolean resume, List<String> classPath) {
         this.properties = properties;
         this.seeds = Collections.unmodifiableList(seeds);
         this.plans = Collections.unmodifiableList(plans);
@@ -53,6 +58,7 @@ public final class SweepOptions {
         this.timeoutSeconds = timeoutSeconds;
         this.out = out;
         this.resume = resume;
+        this.classPath = Collections.unmodifiableList(classPath);
     }
 
     /**
@@ -69,6 +75,7 @@ public final class SweepOptions {
         double timeout = DEFAULT_TIMEOUT;
         Path out = null;
         boolean resume = false;
+        List<String> classPath = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -82,6 +89,7 @@ public final class SweepOptions {
                 case "--timeout" -> timeout = positive(value(args, ++i, a), a, 1.0e7);
                 case "--out" -> out = Paths.get(value(args, ++i, a));
                 case "--resume" -> resume = true;
+                case "-cp", "-classpath", "--classpath" -> classPath.addAll(ServerArguments.entries(value(args, ++i, a)));
                 default -> throw new IllegalArgumentException((a.startsWith("-") ? "unknown option " : "unexpected argument ") + a);
             }
         }
@@ -91,7 +99,7 @@ public final class SweepOptions {
         if (seeds.size() * (long) Math.max(1, plans.size()) > MAX_RUNS) {
             throw new IllegalArgumentException("more than " + MAX_RUNS + " runs");
         }
-        return new SweepOptions(properties, seeds, plans, jobs, timeout, out, resume);
+        return new SweepOptions(properties, seeds, plans, jobs, timeout, out, resume, classPath);
     }
 
     private static String value(String[] args, int i, String option) {

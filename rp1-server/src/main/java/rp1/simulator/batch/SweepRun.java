@@ -3,6 +3,8 @@ package rp1.simulator.batch;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
@@ -18,8 +20,8 @@ import rp1.simulator.launch.StartupException;
 import rp1.simulator.launch.ViewHook;
 
 /**
- * One run of a sweep, in a process of its own: {@code java rp1.simulator.batch.SweepRun DIR} starts
- * the server with {@code DIR/run.ini} (which the sweep wrote: the user's properties with the run's
+ * One run of a sweep, in a process of its own: {@code java rp1.simulator.batch.SweepRun DIR [-cp PATH]}
+ * starts the server with {@code DIR/run.ini} (and the robot's class path) (which the sweep wrote: the user's properties with the run's
  * seed, plan and output files), waits until it stops, and leaves {@link RunReport#FILE} and
  * {@link TrailFile#FILE} in DIR. The process's exit status is the server's.
  */
@@ -32,21 +34,25 @@ public final class SweepRun {
     private static final long START_WAIT_SECONDS = 30;
 
     private final Path dir;
+    /** The server's arguments beyond -p: the robot's class path, if any. */
+    private final List<String> serverArguments;
     private RunStatistics statistics;
     private List<RobotResult> robots = List.of();
     private double endTime = Double.NaN;
 
-    private SweepRun(Path dir) {
+    private SweepRun(Path dir, List<String> serverArguments) {
         this.dir = dir;
+        this.serverArguments = serverArguments;
     }
 
     /** Runs the run in the folder given; the process exits with the server's status. */
     public static void main(String[] args) {
-        if (args.length != 1) {
-            System.err.println("usage: java rp1.simulator.batch.SweepRun RUN-FOLDER (started by rp1.Sweep)");
+        if (args.length != 1 && !(args.length == 3 && args[1].equals("-cp"))) {
+            System.err.println("usage: java rp1.simulator.batch.SweepRun RUN-FOLDER [-cp PATH] (started by rp1.Sweep)");
             System.exit(ExitStatus.STARTUP_FAILED);
         }
-        System.exit(new SweepRun(Paths.get(args[0]).toAbsolutePath()).run());
+        List<String> rest = Arrays.asList(args).subList(1, args.length);
+        System.exit(new SweepRun(Paths.get(args[0]).toAbsolutePath(), rest).run());
     }
 
     private int run() {
@@ -56,7 +62,9 @@ public final class SweepRun {
         Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnceStarted(started), "stop the run"));
         RunningServer server = null;
         try {
-            server = ServerLauncher.start(new String[] {"-p", dir.resolve(PROPERTIES).toString()},
+            List<String> args = new ArrayList<>(List.of("-p", dir.resolve(PROPERTIES).toString()));
+            args.addAll(serverArguments);
+            server = ServerLauncher.start(args.toArray(new String[0]),
                     Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch));
         } catch (StartupException e) {
             return report(RunReport.failed("startup failed: " + e.getMessage(), e.getExitStatus()));

@@ -11,15 +11,18 @@ import rp1.rossum.RsProperties;
 /**
  * Typed, validated access to a properties table read from one source (a file or class-path
  * resource). Only the first white-space-delimited word of a value counts, as in RP1 0.60, so trailing
- * comments are harmless. Errors name the key, the value and the source.
+ * comments are harmless. Errors name the key, the value and the source. Only keys declared in
+ * {@link PropertyKeys} can be read: the same table then tells a known key from a misspelt one.
  */
 final class PropertyReader {
     private final Properties table;
     private final String source;
+    private final PropertyKeys keys;
 
-    PropertyReader(Properties table, String source) {
+    PropertyReader(Properties table, String source, PropertyKeys keys) {
         this.table = table;
         this.source = source;
+        this.keys = keys;
     }
 
     String source() {
@@ -38,6 +41,9 @@ final class PropertyReader {
     /** The value of the first of {@code keys} that is present (later names are accepted aliases), or null. */
     String string(String... keys) {
         for (String key : keys) {
+            if (!this.keys.isKnown(key)) {
+                throw new IllegalStateException("property key " + key + " is read but not declared in ServerConfig.KEYS");
+            }
             String v = RsProperties.firstWord(table.getProperty(key));
             if (v != null) {
                 return v;
@@ -119,6 +125,11 @@ final class PropertyReader {
             }
         }
         throw error(key, v, "one of " + String.join(", ", choices) + " expected");
+    }
+
+    /** Whether a value is empty (nothing but white space): RP1 0.60 read that as the default, silently. */
+    static boolean isEmpty(String value) {
+        return RsProperties.firstWord(value) == null;
     }
 
     ConfigException error(String key, String value, String problem) {

@@ -5,8 +5,10 @@ import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.OptionalLong;
 import java.util.Properties;
+import java.util.Set;
 import java.util.SortedMap;
 
 import rp1.simulator.session.ClientBudgets;
@@ -20,9 +22,42 @@ import rp1.simulator.session.ClientBudgets;
  * {@code clientSubscriptionBudget}, {@code clientMessageBudget}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
  * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName} and {@code eventLogFileName}
  * (docs/properties.md). Immutable; built
- * by {@link #from}, which validates every value.
+ * by {@link #from}, which validates every value and refuses a key it does not know.
  */
 public final class ServerConfig {
+    /**
+     * Every key a server properties file may hold. A key read below must be declared here (reading an
+     * undeclared one throws), and a key in a file that is not here is refused as a typo, with the
+     * nearest of these suggested: so a new key is added by declaring it here, reading it in the
+     * constructor and describing it in docs/properties.md.
+     */
+    static final Set<String> KEYS = Set.of(
+            // RP1 0.60's keys, and the user's guide's spellings of two of them
+            "port", "floorPlanFileName", "logFileName", "logToFile", "logToSystemOut", "logVerbose", "enableGUI",
+            "enableNetworkClients", "simulationSpeed", "animationFrameRate", "modelingFrameRate", "dlcEnabled",
+            "dlcName", "dlcSetIO", "dlcSetLog", "dlcSetLogger", "interlockEnabled", "enableInterlock",
+            // this implementation's
+            "bindAddress", "randomSeed", "exitWhenClientsDone", "maxSimulationTime", "connectTimeout",
+            "clientQueueLimit", "snapshotFileName", "snapshotInterval", "robotsInteract", "waitForClients",
+            "dlcDelivery", "recordFileName", "eventLogFileName",
+            "clientOutputBudget", "clientTimeoutBudget", "clientSubscriptionBudget", "clientMessageBudget");
+
+    /**
+     * Keys an RP1 0.60 server file may hold that this server does not read, and why: accepted with a
+     * warning. RP1 0.60's User's Guide has the server read {@code rossum.ini} as well, so files written
+     * after it carry the client's keys.
+     */
+    static final Map<String, String> UNUSED_0_60_KEYS = Map.of(
+            "hostName", "a client key (rossum.ini); the server listens on bindAddress and port");
+
+    /**
+     * Prefixes under which any key is accepted, for families of keys read elsewhere than here (robot
+     * parameters such as {@code param.NAME} would be declared by adding {@code "param."}). None yet.
+     */
+    static final List<String> KEY_FAMILIES = List.of();
+
+    private static final PropertyKeys DECLARED = new PropertyKeys(KEYS, UNUSED_0_60_KEYS, KEY_FAMILIES);
+
     public static final int DEFAULT_PORT = 7758;
     /** The original caps the animation rate at 32 frames per second. */
     public static final double MAX_ANIMATION_RATE = 32.0;
@@ -98,9 +133,12 @@ public final class ServerConfig {
     public final String eventLogFileName;
     /** The properties as given (values unparsed), sorted by key: a recording keeps them. */
     public final SortedMap<String, String> given;
+    /** What was accepted but is worth saying (a key RP1 0.60 had that this server ignores), one line each. */
+    public final List<String> warnings;
 
-    private ServerConfig(PropertyReader r, String planOverride) throws ConfigException {
-        port = r.integer("port", DEFAULT_PORT, 1025, 32767);
+    private ServerConfig(PropertyReader r, String planOverride, boolean strictKeys) throws ConfigException {
+        warnings = List.copyOf(DECLARED.check(r, strictKeys));
+        port = r.integer("port", DEFAULT_PORT, 1, 65535);
         bindAddress = orDefault(r.string("bindAddress"), "127.0.0.1");
         floorPlanFileName = planOverride != null ? planOverride : r.string("floorPlanFileName");
         logFileName = r.string("logFileName");
@@ -184,7 +222,15 @@ public final class ServerConfig {
      * @param planOverride a floor plan given on the command line ({@code -f}), or null
      */
     public static ServerConfig from(Properties table, String source, String planOverride) throws ConfigException {
-        return new ServerConfig(new PropertyReader(table, source), planOverride);
+        return new ServerConfig(new PropertyReader(table, source, DECLARED), planOverride, true);
+    }
+
+    /**
+     * Like {@link #from}, but a key this version does not know is only a warning: for the properties a
+     * recording kept, which an older version accepted (it ignored unknown keys) and which must replay.
+     */
+    public static ServerConfig fromRecorded(Properties table, String source) throws ConfigException {
+        return new ServerConfig(new PropertyReader(table, source, DECLARED), null, false);
     }
 
     private static String orDefault(String v, String fallback) {

@@ -22,7 +22,8 @@ import rp1.simulator.record.Recorder;
 import rp1.simulator.record.RunRecords;
 
 /**
- * Starts a server from its command line ({@code -p PROPERTIES}, {@code -f PLAN}) the way
+ * Starts a server from its command line ({@code -p PROPERTIES}, {@code -f PLAN}, {@code --port N},
+ * {@code -cp PATH}) the way
  * {@code rp1.Server} does, but returns a handle instead of owning the process, so tests run servers
  * in-process on free ports (behavior.md sections 2 and 3.1).
  *
@@ -43,29 +44,34 @@ public final class ServerLauncher {
     /**
      * Starts a server.
      *
-     * @param args             the command line: {@code -p PROPERTIES} and {@code -f PLAN}
-     * @param workingDirectory where {@code -p}, the floor plan and the log file are looked for first
-     * @param options          a port override and the view
+     * @param args             the command line ({@link ServerArguments})
+     * @param workingDirectory where {@code -p}, the floor plan, {@code -cp}'s entries and the log file are
+     *                         looked for first
+     * @param options          a port override (before {@code --port} and the properties' port) and the view
      * @throws StartupException if the server cannot start; nothing is left running
      */
     public static RunningServer start(String[] args, Path workingDirectory, LaunchOptions options)
             throws StartupException {
-        ClassLoader loader = classLoader();
+        ServerArguments arguments = arguments(args);
+        ClassLoader loader = ClientClassPath.loader(ClientClassPath.resolve(arguments.classPath, workingDirectory),
+                classLoader());
         ResourceLocator locator = new ResourceLocator(workingDirectory, loader);
-        ServerConfig config = configure(args, locator);
+        ServerConfig config = configure(arguments, locator);
         ServerLog log = openLog(config, workingDirectory);
         ClientListener listener = null;
         RunRecords records = RunRecords.none();
         RunningServer.Parts parts;
         try {
             log.important("STARTING SIMULATOR SESSION");
+            config.warnings.forEach(log::important);
             ResourceLocator.Found planText = readPlan(config, locator, log);
             long seed = config.randomSeed.orElse(System.nanoTime());
             Simulation simulation = simulate(config, planText, seed, log);
             records = keepRecords(config, workingDirectory, simulation, planText, seed, log);
             ClientLauncher launcher = ClientLauncher.create(config, log, loader);
             ClientRegistry registry = new ClientRegistry(log);
-            listener = listen(config, options, simulation, planText, registry, log);
+            int port = options.port.orElse(arguments.port.orElse(config.port));
+            listener = listen(config, port, simulation, planText, registry, log);
             parts = new RunningServer.Parts(config, log, simulation, registry, listener, launcher, options.view, records);
         } catch (StartupException | RuntimeException e) {
             if (listener != null) {
@@ -85,10 +91,17 @@ public final class ServerLauncher {
         return context != null ? context : ServerLauncher.class.getClassLoader();
     }
 
-    /** Reads the command line and the properties; every value is validated. */
-    static ServerConfig configure(String[] args, ResourceLocator locator) throws StartupException {
+    private static ServerArguments arguments(String[] args) throws StartupException {
         try {
-            ServerArguments arguments = ServerArguments.parse(args);
+            return ServerArguments.parse(args);
+        } catch (ConfigException e) {
+            throw new StartupException(e.getMessage());
+        }
+    }
+
+    /** Reads the properties the command line names; every value is validated. */
+    private static ServerConfig configure(ServerArguments arguments, ResourceLocator locator) throws StartupException {
+        try {
             ResourceLocator.Found found = locator.properties(arguments.propertiesName);
             ServerConfig config = ServerConfig.from(ResourceLocator.parseProperties(found), found.location,
                     arguments.planName);
@@ -178,7 +191,7 @@ public final class ServerLauncher {
         return file == null ? null : workingDirectory.resolve(file);
     }
 
-    private static ClientListener listen(ServerConfig config, LaunchOptions options, Simulation simulation,
+    private static ClientListener listen(ServerConfig config, int port, Simulation simulation,
                                          ResourceLocator.Found planText, ClientRegistry registry, ServerLog log)
             throws StartupException {
         if (!config.enableNetworkClients) {
@@ -186,7 +199,6 @@ public final class ServerLauncher {
             return null;
         }
         WarmUp.run(parse(config, planText));
-        int port = options.port.orElse(config.port);
         try {
             ClientListener listener = ClientListener.bind(config.bindAddress, port, simulation, registry, log,
                     new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit, config.clientBudgets()));

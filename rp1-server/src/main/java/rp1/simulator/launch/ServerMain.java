@@ -24,9 +24,14 @@ public final class ServerMain {
     public static int run(String[] args) {
         FatalErrors.install();
         try {
-            if (ServerArguments.parse(args).help) {
+            ServerArguments arguments = ServerArguments.parse(args);
+            if (arguments.help) {
                 System.out.println(ServerArguments.USAGE);
                 return ExitStatus.OK;
+            }
+            if (arguments.headless) {
+                // Read by AWT once, when it first starts; nothing has started it yet.
+                System.setProperty("java.awt.headless", "true");
             }
         } catch (ConfigException e) {
             System.err.println("rp1.Server: " + e.getMessage());

@@ -61,7 +61,7 @@ public final class Replayer {
             throws RecordingException, IOException {
         ServerConfig config;
         try {
-            config = ServerConfig.from(recording.propertiesTable(), recording.file() + " (its properties)", null);
+            config = ServerConfig.fromRecorded(recording.propertiesTable(), recording.file() + " (its properties)");
         } catch (ConfigException e) {
             throw new RecordingException(e.getMessage(), e);
         }

@@ -462,7 +462,12 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         }
         scheduler.scheduleImmediate(now, t -> stop(bot, t));
         world.unplace(bot);
-        at(now, t -> world.place(bot, name, t));
+        at(now, t -> {
+            String refusal = world.place(bot, name, t);
+            if (refusal != null) {
+                log.log(description + ": placement '" + (name == null ? "" : name) + "' refused: " + refusal);
+            }
+        });
     }
 
     void sensorStatus(Request.SensorStatus r, double now) {

@@ -158,10 +158,13 @@ public final class World {
      * overlaps no wall and no other robot on the floor. Answers with a placement event. The motion
      * task is queued before the event goes out, so that requests the client sends in answer to it
      * always come after the evaluation of the new pose.
+     *
+     * @return why the placement was refused (for the server's log), or null if the robot is placed
      */
-    public void place(Robot r, String name, double time) {
+    public String place(Robot r, String name, double time) {
         String requested = name == null ? "" : name;
-        RsPlacementEvent event = findPlacement(r, requested, time);
+        Placement found = findPlacement(r, requested, time);
+        RsPlacementEvent event = found.event();
         if (event.valid) {
             r.place(time, event.x, event.y, event.orientation);
             setPlaced(r, true);
@@ -171,11 +174,23 @@ public final class World {
         }
         r.events().send(event);
         changed(time);
+        return found.refusal();
     }
 
-    private RsPlacementEvent findPlacement(Robot r, String requested, double time) {
+    /** The answer to a placement request, and why it was refused (null if it was not). */
+    private record Placement(RsPlacementEvent event, String refusal) {
+        static Placement at(double time, String name, double x, double y, double orientation) {
+            return new Placement(new RsPlacementEvent(time, true, name, x, y, orientation), null);
+        }
+
+        static Placement refused(double time, String name, String why) {
+            return new Placement(new RsPlacementEvent(time, false, name, 0.0, 0.0, 0.0), why);
+        }
+    }
+
+    private Placement findPlacement(Robot r, String requested, double time) {
         if (plan.getObjectCount() == 0) {
-            return invalid(time, "");
+            return Placement.refused(time, "", "the floor plan is empty");
         }
         if (requested.equals("$random")) {
             return randomPose(r, time);
@@ -185,41 +200,47 @@ public final class World {
         }
         for (RsPlacement p : plan.getPlacementArray()) {
             if (p.getName().equals(requested)) {
-                return clear(r, p.x, p.y, p.orientation, time)
-                        ? new RsPlacementEvent(time, true, p.getName(), p.x, p.y, p.orientation)
-                        : invalid(time, requested);
+                String blocked = blockedBy(r, p.x, p.y, p.orientation, time);
+                return blocked == null ? Placement.at(time, p.getName(), p.x, p.y, p.orientation)
+                        : Placement.refused(time, requested, blocked + " is in the way");
             }
         }
-        return invalid(time, requested);
+        return Placement.refused(time, requested, "the floor plan has no placement of that name");
     }
 
-    private RsPlacementEvent randomPose(Robot r, double time) {
+    private Placement randomPose(Robot r, double time) {
         RsRectangle b = plan.getBounds();
         for (int i = 0; i < RANDOM_PLACEMENT_ATTEMPTS; i++) {
             double x = b.x + random.nextDouble() * b.width;
             double y = b.y + random.nextDouble() * b.height;
             double theta = random.nextDouble() * 2.0 * Math.PI;
             if (clear(r, x, y, theta, time)) {
-                return new RsPlacementEvent(time, true, "$random", x, y, theta);
+                return Placement.at(time, "$random", x, y, theta);
             }
         }
-        return invalid(time, "$random");
+        return Placement.refused(time, "$random", "no free pose found in " + RANDOM_PLACEMENT_ATTEMPTS + " tries");
     }
 
-    private RsPlacementEvent randomPlacement(Robot r, double time) {
+    private Placement randomPlacement(Robot r, double time) {
         List<RsPlacement> candidates = new ArrayList<>();
         Collections.addAll(candidates, plan.getPlacementArray());
+        boolean any = !candidates.isEmpty();
         while (!candidates.isEmpty()) {
             RsPlacement p = candidates.remove(random.nextInt(candidates.size()));
             if (clear(r, p.x, p.y, p.orientation, time)) {
-                return new RsPlacementEvent(time, true, p.getName(), p.x, p.y, p.orientation);
+                return Placement.at(time, p.getName(), p.x, p.y, p.orientation);
             }
         }
-        return invalid(time, "");
+        return Placement.refused(time, "", any ? "every placement of the floor plan is taken or blocked"
+                : "the floor plan has no placements");
     }
 
-    private static RsPlacementEvent invalid(double time, String name) {
-        return new RsPlacementEvent(time, false, name, 0.0, 0.0, 0.0);
+    /** What keeps the robot from standing at (x, y, theta): null if nothing, else "a wall" or "another robot". */
+    private String blockedBy(Robot r, double x, double y, double theta, double time) {
+        if (clear(r, x, y, theta, time)) {
+            return null;
+        }
+        return robotsInteract && clearOfWalls(r, x, y, theta) ? "another robot" : "a wall";
     }
 
     /**
@@ -234,6 +255,13 @@ public final class World {
         RsWall[] nearWalls = wallIndex.near(x - reach, y - reach, x + reach, y + reach);
         RsWall[] obstacles = robotsInteract ? withRobots(nearWalls, shapesOfRobotsNear(r, x, y, reach, time)) : nearWalls;
         return !r.getBody().checkForOverlap(obstacles, new RsTransform(theta, x, y));
+    }
+
+    /** Whether the robot at (x, y, theta) overlaps no wall, whatever the other robots do. */
+    private boolean clearOfWalls(Robot r, double x, double y, double theta) {
+        double reach = r.shapes().reach() + NEAR;
+        RsWall[] nearWalls = wallIndex.near(x - reach, y - reach, x + reach, y + reach);
+        return !r.getBody().checkForOverlap(nearWalls, new RsTransform(theta, x, y));
     }
 
     /**

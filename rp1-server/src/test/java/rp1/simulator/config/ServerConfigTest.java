@@ -8,7 +8,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.io.StringReader;
 import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
 import java.util.Properties;
+import java.util.Set;
 
 import org.junit.jupiter.api.Test;
 
@@ -79,11 +82,67 @@ class ServerConfigTest {
     @Test
     void badValuesNameTheFileTheKeyAndTheValue() {
         assertMessage("port=77x\n", "test.ini: port=77x: an integer expected");
-        assertMessage("port=80\n", "test.ini: port=80: must be in [1025, 32767]");
+        assertMessage("port=0\n", "test.ini: port=0: must be in [1, 65535]");
+        assertMessage("port=65536\n", "test.ini: port=65536: must be in [1, 65535]");
         assertMessage("enableGUI=yes\n", "test.ini: enableGUI=yes: true or false expected");
         assertMessage("simulationSpeed=2000\n", "test.ini: simulationSpeed=2000: must be in [0.001, 1000.0]");
         assertMessage("simulationSpeed=fast\n", "test.ini: simulationSpeed=fast: a number expected");
         assertMessage("randomSeed=abc\n", "test.ini: randomSeed=abc: an integer expected");
+    }
+
+    @Test
+    void everyPortOfTcpIsAcceptedNotOnly0_60sRange() throws Exception {
+        assertEquals(40100, config("floorPlanFileName=x\nport=40100\n").port);
+        assertEquals(80, config("floorPlanFileName=x\nport=80\n").port);
+        assertEquals(65535, config("floorPlanFileName=x\nport=65535\n").port);
+    }
+
+    @Test
+    void aMisspeltKeyIsRefusedWithTheNearestKnownOne() {
+        assertMessage("simulationSpeed=max\ninterlockEnabled=true\nmaxSimulationTme=30\n",
+                "test.ini: maxSimulationTme=30: unknown key; did you mean maxSimulationTime?");
+        assertMessage("EnableGui=false\n", "did you mean enableGUI?");
+    }
+
+    @Test
+    void anEmptyValueIsRefusedRatherThanTakenForTheDefault() {
+        assertMessage("simulationSpeed=\n", "test.ini: simulationSpeed=: empty value");
+        assertMessage("logVerbose =   \n", "test.ini: logVerbose=: empty value");
+    }
+
+    @Test
+    void aKeyOf0_60ThatTheServerDoesNotUseIsAcceptedWithAWarning() throws Exception {
+        ServerConfig c = config("floorPlanFileName=x\nhostName=127.0.0.1\n");
+        assertEquals(1, c.warnings.size(), c.warnings.toString());
+        assertTrue(c.warnings.get(0).startsWith("test.ini: hostName=127.0.0.1: ignored (a client key"), c.warnings.get(0));
+        assertTrue(config("floorPlanFileName=x\n").warnings.isEmpty());
+    }
+
+    @Test
+    void aRecordingsPropertiesReplayEvenWithAKeyThisVersionDoesNotKnow() throws Exception {
+        Properties p = new Properties();
+        p.setProperty("floorPlanFileName", "x");
+        p.setProperty("someOldKey", "1");
+        ServerConfig c = ServerConfig.fromRecorded(p, "run.rec (its properties)");
+        assertTrue(c.warnings.get(0).contains("someOldKey=1: unknown key"), c.warnings.toString());
+    }
+
+    @Test
+    void aKeyReadButNotDeclaredInTheTableIsAProgrammingErrorNotASilentTypo() {
+        Properties p = new Properties();
+        p.setProperty("byteBudget", "10");
+        PropertyReader r = new PropertyReader(p, "test.ini",
+                new PropertyKeys(ServerConfig.KEYS, ServerConfig.UNUSED_0_60_KEYS, ServerConfig.KEY_FAMILIES));
+        IllegalStateException e = assertThrows(IllegalStateException.class, () -> r.string("byteBudget"));
+        assertTrue(e.getMessage().contains("not declared in ServerConfig.KEYS"), e.getMessage());
+    }
+
+    @Test
+    void aFamilyPrefixAcceptsEveryKeyUnderIt() throws Exception {
+        PropertyKeys keys = new PropertyKeys(Set.of("port"), Map.of(), List.of("param."));
+        assertTrue(keys.isKnown("param.speed"));
+        assertFalse(keys.isKnown("params"));
+        assertEquals("port", keys.nearest("prot"));
     }
 
     @Test
@@ -149,6 +208,20 @@ class ServerConfigTest {
         ConfigException word = assertThrows(ConfigException.class,
                 () -> ServerArguments.parse(new String[] {"-p", "a.ini", "clientzero.ini"}));
         assertTrue(word.getMessage().startsWith("unexpected argument clientzero.ini\nusage:"), word.getMessage());
+    }
+
+    @Test
+    void portHeadlessAndClassPathAreTakenFromTheCommandLine() throws Exception {
+        ServerArguments a = ServerArguments.parse(new String[] {"--port", "40100", "--headless", "-cp", "a" + java.io.File.pathSeparator
+                + "b.jar", "--classpath", "c"});
+        assertEquals(40100, a.port.getAsInt());
+        assertTrue(a.headless);
+        assertEquals(List.of("a", "b.jar", "c"), a.classPath);
+        ServerArguments none = ServerArguments.parse(new String[0]);
+        assertFalse(none.port.isPresent());
+        assertFalse(none.headless);
+        ConfigException e = assertThrows(ConfigException.class, () -> ServerArguments.parse(new String[] {"--port", "0"}));
+        assertEquals("--port 0: a port number from 1 to 65535 expected", e.getMessage());
     }
 
     @Test

@@ -45,6 +45,25 @@ class ServerStartupTest {
     }
 
     @Test
+    void aRefusedPlacementIsLoggedWithItsReason() throws Exception {
+        RunningServer server = TestServer.start(dir, "waitForClients=0");
+        try {
+            TcpRobot first = TcpRobot.connect(server.getPort(), "first").startLoop();
+            first.sendPlacementRequest("p1");
+            first.await(rp1.rossum.event.RsPlacementEvent.class, e -> e.valid);
+            TcpRobot second = TcpRobot.connect(server.getPort(), "second").startLoop();
+            second.sendPlacementRequest("p1");
+            second.await(rp1.rossum.event.RsPlacementEvent.class, e -> !e.valid);
+            String log = TestServer.awaitLog(dir, "placement 'p1' refused: another robot is in the way");
+            assertTrue(log.matches("(?s).*client 2 \\([^)]*\\): placement 'p1' refused: another robot is in the way.*"), log);
+            first.leave();
+            second.leave();
+        } finally {
+            server.stop();
+        }
+    }
+
+    @Test
     void withoutASeedTheServerPicksOneAndSaysHowToRepeatTheRun() throws Exception {
         RunningServer server = TestServer.start(dir);
         server.stop();

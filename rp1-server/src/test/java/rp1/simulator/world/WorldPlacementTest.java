@@ -94,6 +94,20 @@ class WorldPlacementTest {
     }
 
     @Test
+    void aRefusalSaysWhyForTheServersLog() throws Exception {
+        World w = world(1);
+        Robot first = w.addRobot(round("first"), new Inbox());
+        Robot second = w.addRobot(round("second"), new Inbox());
+        assertEquals(null, w.place(first, "a", 0.0), "placed");
+        assertEquals("another robot is in the way", w.place(second, "a", 0.0));
+        assertEquals("a wall is in the way", w.place(second, "inBlock", 0.0));
+        assertEquals("the floor plan has no placement of that name", w.place(second, "nowhere", 0.0));
+        w.place(second, "b", 0.0);
+        Robot third = w.addRobot(round("third"), new Inbox());
+        assertEquals("every placement of the floor plan is taken or blocked", w.place(third, "", 0.0));
+    }
+
+    @Test
     void aNamelessPlacementPicksAClearPlacementAtRandom() throws Exception {
         for (long seed = 0; seed < 20; seed++) {
             World w = world(seed);

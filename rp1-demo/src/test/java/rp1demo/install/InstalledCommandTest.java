@@ -1,0 +1,177 @@
+package rp1demo.install;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import javax.tools.ToolProvider;
+
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The installed simulator ({@code gradle installDist}: build/install/rp1) used as a newcomer uses it,
+ * from a folder of their own, without a display: every file is relative to that folder, a properties
+ * file is honoured headless, a missing one fails, the jar runs with {@code java -jar}, and a robot
+ * compiled apart from the simulator runs in a sweep with {@code -cp}. The build passes the
+ * installation's folder as {@code rp1.install}.
+ */
+@Timeout(180)
+class InstalledCommandTest {
+    private static final String INSTALL = System.getProperty("rp1.install");
+    private static final String VERSION = System.getProperty("rp1.version", "0.60.1");
+
+    @TempDir
+    Path dir;
+
+    /** What a finished command left: its exit status and everything it printed. */
+    private record Result(int status, String output) {
+    }
+
+    @BeforeEach
+    void installed() {
+        assumeTrue(INSTALL != null && Files.isExecutable(Paths.get(INSTALL, "bin", "rp1")),
+                "no installed simulator: run through `gradle test`, which installs it first (rp1.install)");
+    }
+
+    private Result run(String... command) throws IOException, InterruptedException {
+        ProcessBuilder b = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true);
+        b.environment().remove("DISPLAY");
+        b.redirectOutput(dir.resolve("output.txt").toFile());
+        Process p = b.start();
+        assertTrue(p.waitFor(150, TimeUnit.SECONDS), "the command ended");
+        return new Result(p.exitValue(), Files.readString(dir.resolve("output.txt")));
+    }
+
+    private Result rp1(String... args) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(List.of(Paths.get(INSTALL, "bin", "rp1").toString()));
+        command.addAll(List.of(args));
+        return run(command.toArray(new String[0]));
+    }
+
+    private void write(String name, String... lines) throws IOException {
+        Files.writeString(dir.resolve(name), String.join("\n", lines) + "\n");
+    }
+
+    /** The bumper car for 5 simulated seconds, headless, recording into a file named relative to dir. */
+    private void bumperProperties() throws IOException {
+        write("mine.ini", "floorPlanFileName=contest.txt", "enableGUI=true", "enableNetworkClients=false",
+                "interlockEnabled=true", "simulationSpeed=max", "randomSeed=3", "maxSimulationTime=5",
+                "dlcEnabled=true", "dlcName=rp1demo.bumper.Bumper", "recordFileName=mine.rec");
+    }
+
+    @Test
+    void aPropertiesFileRunsHeadlessWithoutADisplayAndItsRecordingReplaysFromTheSameFolder() throws Exception {
+        bumperProperties();
+        Result server = rp1("-p", "mine.ini");
+        assertEquals(0, server.status(), server.output());
+        assertTrue(Files.exists(dir.resolve("mine.rec")), "the recording is where the user stands");
+        assertTrue(!server.output().contains("fire-fighting"), "the file given ran, not the demo: " + server.output());
+
+        Result replay = rp1("replay", "mine.rec", "--snapshot", "end.png");
+        assertEquals(0, replay.status(), replay.output());
+        assertTrue(Files.exists(dir.resolve("end.png")));
+    }
+
+    @Test
+    void theTemplateRobotDrivesOverTcpInTheSimulatorStartedWithAPort() throws Exception {
+        Path template = Paths.get(System.getProperty("rp1.root", "..")).resolve("examples/my-robot");
+        assertEquals(0, ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", dir.resolve("classes").toString(),
+                "-cp", System.getProperty("java.class.path"),
+                template.resolve("src/main/java/mybot/MyRobot.java").toString()));
+        Files.copy(template.resolve("rossum.ini"), dir.resolve("rossum.ini"));
+        int port;
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
+            port = s.getLocalPort();
+        }
+        ProcessBuilder b = new ProcessBuilder(Paths.get(INSTALL, "bin", "rp1").toString(), "-p", "network.ini",
+                "--port", Integer.toString(port)).directory(dir.toFile()).redirectErrorStream(true)
+                .redirectOutput(dir.resolve("server.txt").toFile());
+        b.environment().remove("DISPLAY");
+        Process server = b.start();
+        try {
+            awaitText(dir.resolve("server.txt"), "Socket ready: 127.0.0.1:" + port);
+            ProcessBuilder robot = new ProcessBuilder(Paths.get(System.getProperty("java.home"), "bin", "java").toString(),
+                    "-cp", dir.resolve("classes") + java.io.File.pathSeparator + System.getProperty("java.class.path"),
+                    "mybot.MyRobot", "-port", Integer.toString(port)).directory(dir.toFile()).redirectErrorStream(true)
+                    .redirectOutput(dir.resolve("robot.txt").toFile());
+            Process r = robot.start();
+            try {
+                awaitText(dir.resolve("robot.txt"), "stopped at 1.79");
+            } finally {
+                r.destroy();
+            }
+        } finally {
+            server.destroy();
+            server.waitFor(30, TimeUnit.SECONDS);
+        }
+    }
+
+    private static void awaitText(Path file, String text) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (!(Files.exists(file) && Files.readString(file).contains(text))) {
+            assertTrue(System.nanoTime() < deadline, "no \"" + text + "\" in " + file + ":\n"
+                    + (Files.exists(file) ? Files.readString(file) : ""));
+            Thread.sleep(50);
+        }
+    }
+
+    @Test
+    void aMissingPropertiesFileIsAnErrorNotTheDemo() throws Exception {
+        Result r = rp1("-p", "mybot.ini");
+        assertEquals(1, r.status(), r.output());
+        assertTrue(r.output().contains("cannot find properties mybot.ini"), r.output());
+        assertTrue(!r.output().contains("openjdk version"), "the start script says nothing of its own: " + r.output());
+    }
+
+    @Test
+    void theServerJarRunsWithJavaDashJar() throws Exception {
+        bumperProperties();
+        Path jar = Paths.get(INSTALL, "lib", "rp1-server-" + VERSION + ".jar");
+        Result r = run(Paths.get(System.getProperty("java.home"), "bin", "java").toString(), "-jar", jar.toString(),
+                "-p", "mine.ini");
+        assertEquals(0, r.status(), r.output());
+        assertTrue(Files.exists(dir.resolve("mine.rec")));
+    }
+
+    @Test
+    void aRobotCompiledApartRunsInASweepWithItsClassPath() throws Exception {
+        Path source = dir.resolve("src/mybot/Still.java");
+        Files.createDirectories(source.getParent());
+        Files.writeString(source, String.join("\n",
+                "package mybot;",
+                "/** A robot that places itself and stands still. */",
+                "public class Still extends rp1.rossum.RsClient {",
+                "    @Override public void initialize() throws java.io.IOException {",
+                "        super.initialize();",
+                "        rp1.rossum.RsBody body = new rp1.rossum.RsBody(\"still\");",
+                "        body.addPart(new rp1.rossum.RsBodyCircle(0.0, 0.0, 0.15));",
+                "        sendBodySpecification(body);",
+                "        sendPlacementRequest(\"home\");",
+                "    }",
+                "}"), StandardCharsets.UTF_8);
+        assertEquals(0, ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", dir.resolve("classes").toString(),
+                "-cp", System.getProperty("java.class.path"), source.toString()));
+        write("still.ini", "floorPlanFileName=WhiteRoom.txt", "enableGUI=false", "enableNetworkClients=false",
+                "interlockEnabled=true", "simulationSpeed=max", "maxSimulationTime=2", "dlcEnabled=true",
+                "dlcName=mybot.Still");
+
+        Result r = rp1("sweep", "-p", "still.ini", "--seeds", "1-2", "--jobs", "2", "--out", "out", "-cp", "classes");
+        assertEquals(0, r.status(), r.output());
+        List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
+        assertEquals(3, rows.size(), rows.toString());
+        String[] row = rows.get(1).split(",");
+        assertEquals("0", row[5], "exit status of " + rows.get(1));
+    }
+}
