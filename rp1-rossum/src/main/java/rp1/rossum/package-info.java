@@ -14,7 +14,7 @@
  *
  * <p>Internal classes, package-private and free to change: the wire format, that is the codecs of
  * a body specification ({@code BodyCodec}), of a plan event ({@code PlanCodec}), of the other events
- * ({@code EventCodec}) and of requests ({@code RequestCodec}, decoding into a {@code RequestSink}),
+ * ({@code EventCodec}) and of requests ({@code RequestCodec}, decoding into a {@code RequestListener}),
  * over the byte helpers {@code WireIn}, {@code WireOut} and {@code WireLimits}; the client's table of
  * event handlers ({@code HandlerRegistry}); and model helpers ({@code MotionRequests},
  * {@code BodyOutline}, {@code SweptContact}, {@code PlanLabels}, {@code PlanPolygons}).
