@@ -282,12 +282,13 @@ public class RsConnection extends RsProtocol implements Runnable {
 
     /**
      * Beyond RP1 0.60: connects {@code client}, in the same process, to this connection without
-     * streams. The client's requests come to this connection's handlers as objects (equal to what
-     * decoding them from the wire would give), on the thread that sends them; its body arrives as a
-     * decoded copy, as from the wire; and each event sent here is handed to the client's handlers at
-     * once, on the sending thread, as a copy of what the client would decode. There is no handshake and
-     * no interlock: the handlers returning is the acknowledgement. If a handler throws an
-     * {@code Error}, the session ends and {@code onFailure} is told. Closing either side closes both.
+     * streams. The client's requests come to this connection's request listener (or handlers) as
+     * objects (equal to what decoding them from the wire would give), on the thread that sends them;
+     * its body arrives as a decoded copy, as from the wire; and each event sent here is handed to the
+     * client's handlers at once, on the sending thread, as a copy of what the client would decode.
+     * There is no handshake and no interlock: the handlers returning is the acknowledgement. If a
+     * handler throws an {@code Error}, the session ends and {@code onFailure} is told. Closing either
+     * side closes both.
      */
     public void connectDirect(RsClient client, Consumer<Throwable> onFailure) {
         DirectLink link = new DirectLink(this, client, onFailure);
