@@ -1,5 +1,8 @@
 package rp1.simulator.world;
 
+import static rp1.rossum.wire.MotionLimits.NULL_LIMIT;
+import static rp1.rossum.wire.MotionLimits.STRAIGHT_LIMIT;
+
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -36,16 +39,6 @@ public final class World {
     static final int RANDOM_PLACEMENT_ATTEMPTS = 50;
     /** Margin, metres, around a robot's reach when looking for what it could touch (beyond the 1e-4 m of the clear test). */
     private static final double NEAR = 0.01;
-    /*
-     * How the body turns a request into a motion (docs/behavior.md section 5.2), as the client library's
-     * MotionRequests does it: the walls offered to the motion's search must be those of the motion it
-     * will actually compute, so these limits must be exactly that class's. A turn rate just under
-     * 0.1 degree per second drives straight, and a wall beyond the arc's circle must not be left out.
-     */
-    /** Durations, speeds and turn rates below this make a null motion. */
-    private static final double NULL_LIMIT = 1.0e-4;
-    /** Below this turn rate, rad/s (0.1 degree per second), a motion is a straight line. */
-    private static final double STRAIGHT = 0.1 * Math.PI / 180.0;
     private static final RsWall[] NO_WALLS = new RsWall[0];
 
     private final RsPlan plan;
@@ -341,7 +334,7 @@ public final class World {
         RsTransform p = r.pose();
         double theta = p.getTheta();
         double reach = r.shapes().reach() + NEAR;
-        if (Math.abs(w) < STRAIGHT) {
+        if (Math.abs(w) < STRAIGHT_LIMIT) {
             double d = Math.abs(v * q.duration);
             double heading = v < 0 ? theta + Math.PI : theta;
             return wallIndex.alongSegment(p.m13, p.m23, p.m13 + d * Math.cos(heading), p.m23 + d * Math.sin(heading), reach);
