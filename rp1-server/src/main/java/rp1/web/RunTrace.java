@@ -1,0 +1,213 @@
+package rp1.web;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import rp1.rossum.RsBodyPart;
+import rp1.rossum.RsBodyRangeSensor;
+import rp1.rossum.RsBodyTargetSensor;
+import rp1.rossum.event.RsEvent;
+import rp1.simulator.Simulation;
+import rp1.simulator.record.EventText;
+import rp1.simulator.session.ClientSession;
+import rp1.simulator.snapshot.RobotSnapshot;
+import rp1.simulator.snapshot.TrailSnapshot;
+import rp1.simulator.snapshot.WorldSnapshot;
+import rp1.simulator.world.World;
+import rp1.simulator.world.WorldListener;
+
+/**
+ * Gathers a run for the page, as it happens: at every change of the world (every modelling step of
+ * a moving robot, a placement, a target selected, trails removed) a snapshot of it, with the range
+ * and target sensors' readings; and every event sent to a client, as its event-log line. Several
+ * changes at one simulated time make one frame, the last. It only reads, on the thread running the
+ * simulation's tasks, and sends nothing, so a traced run is the run untraced (docs/recording.md).
+ *
+ * <p>What is gathered leaves in {@link #drain() chunks} of the page's encoding, each continuing
+ * where the one before stopped: a replay page holds them all, a live page gets them as they come.
+ * Thread-safe: the simulation's thread adds, any thread drains.
+ */
+public final class RunTrace implements WorldListener, Simulation.EventListener, AutoCloseable {
+    private final Simulation simulation;
+    private final Chunk chunk = new Chunk();
+    /** The latest capture, waiting for the next one at another time (or the end) to become a frame. */
+    private Capture pending;
+    private boolean closed;
+
+    private RunTrace(Simulation simulation) {
+        this.simulation = simulation;
+    }
+
+    /**
+     * Starts tracing {@code simulation}'s world and events. Attach before the simulation runs, on the
+     * thread that will run it or before it is started.
+     */
+    public static RunTrace attach(Simulation simulation) {
+        RunTrace trace = new RunTrace(simulation);
+        simulation.getWorld().addListener(trace);
+        simulation.addEventListener(trace);
+        return trace;
+    }
+
+    /** The header of the page's data: the floor plan, as JSON. */
+    public String planJson() {
+        Json j = new Json().beginObject().key("v").value(1);
+        PlanJson.write(j, simulation.getWorld().getPlan());
+        return j.endObject().toString();
+    }
+
+    @Override
+    public synchronized void worldChanged(World world, double simTime) {
+        if (closed) {
+            return;
+        }
+        double t = Double.isNaN(simTime) ? simulation.getSimTime() : simTime;
+        Capture next = Capture.of(WorldSnapshot.of(world, t));
+        if (pending != null && pending.snapshot().simTime() != t) {
+            chunk.frame(pending);
+        }
+        pending = next;
+    }
+
+    @Override
+    public synchronized void event(ClientSession session, RsEvent event, boolean delivered) {
+        if (delivered && !closed) {
+            chunk.event(EventText.line(session.getNumber(), event));
+        }
+    }
+
+    /**
+     * What was gathered since the last drain, as one chunk of JSON (docs/recording.md). The latest
+     * change is made a frame first, so a live page shows it; a later change at the same time makes
+     * another frame at that time, which the page shows instead.
+     */
+    public synchronized String drain() {
+        if (pending != null) {
+            chunk.frame(pending);
+            pending = null;
+        }
+        return chunk.take();
+    }
+
+    /** Stops tracing; what was gathered can still be drained. */
+    @Override
+    public synchronized void close() {
+        closed = true;
+        simulation.getWorld().removeListener(this);
+    }
+
+    /**
+     * A snapshot with the sensor readings it does not hold, read at the same moment.
+     *
+     * @param readings per robot in the snapshot, per part: a range sensor's range (Double), a target
+     *                 sensor's target (String or null), else null
+     */
+    record Capture(WorldSnapshot snapshot, List<Object[]> readings) {
+        static Capture of(WorldSnapshot snapshot) {
+            List<Object[]> readings = new ArrayList<>();
+            for (RobotSnapshot r : snapshot.robots()) {
+                Object[] values = new Object[r.parts().size()];
+                for (int i = 0; i < values.length; i++) {
+                    RsBodyPart part = r.parts().get(i).part();
+                    if (part instanceof RsBodyRangeSensor s) {
+                        values[i] = s.getRange();
+                    } else if (part instanceof RsBodyTargetSensor s) {
+                        values[i] = s.getTargetName();
+                    }
+                }
+                readings.add(values);
+            }
+            return new Capture(snapshot, readings);
+        }
+    }
+
+    /** The encoder: what the page already has, and what has been gathered since. */
+    private static final class Chunk {
+        private final StringBuilder times = new StringBuilder();
+        private final Map<Integer, RobotTrack> robots = new LinkedHashMap<>();
+        private final Map<Object, SegmentTrack> segments = new IdentityHashMap<>();
+        private final List<SegmentTrack> segmentOrder = new ArrayList<>();
+        private final StringBuilder selection = new StringBuilder();
+        private final List<String> events = new ArrayList<>();
+        private boolean[] selected;
+        private int frames;
+        private long lastNanos;
+
+        void event(String line) {
+            events.add(line);
+        }
+
+        void frame(Capture c) {
+            WorldSnapshot s = c.snapshot();
+            int f = frames++;
+            long nanos = Math.round(s.simTime() * 1e9);
+            Encoding.append(times, nanos - lastNanos);
+            lastNanos = nanos;
+            selection(f, s);
+            List<RobotSnapshot> present = s.robots();
+            for (int i = 0; i < present.size(); i++) {
+                RobotSnapshot r = present.get(i);
+                robots.computeIfAbsent(r.number(), n -> new RobotTrack(r)).frame(f, r, c.readings().get(i));
+            }
+            for (RobotTrack t : robots.values()) {
+                t.absentUnless(f, present);
+            }
+            IdentityHashMap<Object, Boolean> shown = new IdentityHashMap<>();
+            for (TrailSnapshot t : s.trails()) {
+                shown.put(t.segment(), Boolean.TRUE);
+                SegmentTrack track = segments.get(t.segment());
+                if (track == null) {
+                    track = new SegmentTrack(segmentOrder.size(), t);
+                    segments.put(t.segment(), track);
+                    segmentOrder.add(track);
+                }
+                track.frame(f, t);
+            }
+            for (SegmentTrack track : segmentOrder) {
+                if (!shown.containsKey(track.segment())) {
+                    track.gone(f);
+                }
+            }
+        }
+
+        private void selection(int f, WorldSnapshot s) {
+            List<Boolean> now = s.targetSelected();
+            if (selected == null) {
+                selected = new boolean[now.size()];
+                Arrays.fill(selected, true);
+            }
+            for (int i = 0; i < selected.length; i++) {
+                if (now.get(i) != selected[i]) {
+                    selected[i] = now.get(i);
+                    Encoding.append(selection, f, i, selected[i] ? 1 : 0);
+                }
+            }
+        }
+
+        String take() {
+            Json j = new Json().beginObject();
+            j.key("t").raw("[" + times + "]");
+            times.setLength(0);
+            j.key("robots").beginArray();
+            for (RobotTrack t : robots.values()) {
+                t.take(j);
+            }
+            j.endArray().key("segs").beginArray();
+            for (SegmentTrack t : segmentOrder) {
+                t.take(j);
+            }
+            j.endArray().key("sel").raw("[" + selection + "]");
+            selection.setLength(0);
+            j.key("ev").beginArray();
+            for (String e : events) {
+                j.value(e);
+            }
+            events.clear();
+            return j.endArray().endObject().toString();
+        }
+    }
+}
