@@ -65,7 +65,8 @@ public final class RunTrace implements WorldListener, Simulation.EventListener, 
         if (closed) {
             return;
         }
-        double t = Double.isNaN(simTime) ? simulation.getSimTime() : simTime;
+        // The recorded time, not now(): now() brings a paced clock up to date, which an observer must not do.
+        double t = Double.isNaN(simTime) ? simulation.getScheduler().recordedTime() : simTime;
         Capture next = Capture.of(WorldSnapshot.of(world, t));
         if (pending != null && pending.snapshot().simTime() != t) {
             chunk.frame(pending);

@@ -15,7 +15,8 @@ import java.util.SortedMap;
  * plus the keys this implementation adds: {@code bindAddress}, {@code simulationSpeed=max},
  * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
  * {@code clientQueueLimit}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
- * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName} and {@code eventLogFileName}
+ * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName}, {@code eventLogFileName} and
+ * {@code viewPort}
  * (docs/properties.md). Immutable; built
  * by {@link #from}, which validates every value.
  */
@@ -85,6 +86,8 @@ public final class ServerConfig {
     public final String recordFileName;
     /** Where to write every event sent to a client, one line each (docs/recording.md), or null. */
     public final String eventLogFileName;
+    /** The port a browser watches the run on ({@code viewPort}, docs/properties.md); 0: no live view. */
+    public final int viewPort;
     /** The properties as given (values unparsed), sorted by key: a recording keeps them. */
     public final SortedMap<String, String> given;
 
@@ -123,6 +126,7 @@ public final class ServerConfig {
         dlcDelivery = Delivery.valueOf(r.choice("dlcDelivery", "auto", "auto", "direct", "pipes").toUpperCase(Locale.ROOT));
         recordFileName = r.string("recordFileName");
         eventLogFileName = r.string("eventLogFileName");
+        viewPort = r.integer("viewPort", 0, 0, 65535);
         given = r.given();
         checkConsistency(r);
     }
