@@ -47,6 +47,8 @@ public final class LiveView implements AutoCloseable {
     /** Every chunk so far, in order; its monitor is waited on by the browsers' streams. */
     private final List<String> chunks = new ArrayList<>();
     private volatile boolean closed;
+    /** The simulation time the last chunk carried (only the pump and the closing thread publish). */
+    private double lastNow = -1.0;
 
     private LiveView(Simulation simulation, HttpServer server, String title) {
         this.simulation = simulation;
@@ -108,11 +110,18 @@ public final class LiveView implements AutoCloseable {
         }
     }
 
+    /**
+     * Makes what the trace gathered a chunk, with the simulation's time (which goes on while nothing
+     * changes, and which the page's clock follows), as the window's clock reads it.
+     */
     private void publish() {
         String chunk = trace.drain();
-        if (!chunk.equals(EMPTY_CHUNK)) {
+        double now = simulation.getSimTime();
+        if (!chunk.equals(EMPTY_CHUNK) || now != lastNow) {
+            lastNow = now;
+            String timed = chunk.substring(0, chunk.length() - 1) + ",\"now\":" + new Json().value(now) + "}";
             synchronized (chunks) {
-                chunks.add(chunk);
+                chunks.add(timed);
                 chunks.notifyAll();
             }
         }

@@ -61,9 +61,10 @@ class ReplayPageTest {
         Path page = dir.resolve("page.html");
         replay(recording.toString(), "--html", page.toString());
         String html = text(page);
-        for (String outside : List.of("src=", "href=", "http://", "https://", "url(", "@import", "fetch(\"http")) {
+        for (String outside : List.of("src=", "http://", "https://", "url(", "@import", "fetch(\"http")) {
             assertFalse(html.contains(outside), "the page refers to something outside it: " + outside);
         }
+        assertFalse(Pattern.compile("href=\"(?!data:)").matcher(html).find(), "the page links to nothing outside it");
         assertTrue(html.contains("\"name\":\"Wanderer\""), "the robot is in the page");
         List<String> events = Files.readAllLines(dir.resolve("run.events"), StandardCharsets.UTF_8);
         String last = events.get(events.size() - 1).replace("\\", "\\\\").replace("\"", "\\\"");

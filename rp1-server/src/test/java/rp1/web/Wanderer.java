@@ -57,8 +57,13 @@ public class Wanderer extends RsClient {
         sendPlacementRequest("home");
     }
 
+    /** How many motions it makes by itself: {@link #LEGS}. */
+    protected int legs() {
+        return LEGS;
+    }
+
     private void next() {
-        if (legs >= LEGS) {
+        if (legs >= legs()) {
             return;
         }
         legs++;
