@@ -13,6 +13,8 @@ import rp1.rossum.RsBodyTargetSensor;
 import rp1.rossum.event.RsEvent;
 import rp1.simulator.Simulation;
 import rp1.simulator.record.EventText;
+import rp1.simulator.scheduler.Scheduler;
+import rp1.simulator.scheduler.TaskHandle;
 import rp1.simulator.session.ClientSession;
 import rp1.simulator.snapshot.RobotSnapshot;
 import rp1.simulator.snapshot.TrailSnapshot;
@@ -21,11 +23,12 @@ import rp1.simulator.world.World;
 import rp1.simulator.world.WorldListener;
 
 /**
- * Gathers a run for the page, as it happens: at every change of the world (every modelling step of
- * a moving robot, a placement, a target selected, trails removed) a snapshot of it, with the range
- * and target sensors' readings; and every event sent to a client, as its event-log line. Several
- * changes at one simulated time make one frame, the last. It only reads, on the thread running the
- * simulation's tasks, and sends nothing, so a traced run is the run untraced (docs/recording.md).
+ * Gathers a run for the page, as it happens: at every simulated time at which the world changed
+ * (every modelling step of a moving robot, a placement, a target selected, trails removed) a
+ * snapshot of it as that time left it, with the range and target sensors' readings; and every event
+ * sent to a client, as its event-log line. It only reads, in observer tasks (which run after the
+ * model tasks due at their time, are not counted among them and move no clock), and sends nothing,
+ * so a traced run is the run untraced (docs/recording.md).
  *
  * <p>What is gathered leaves in {@link #drain() chunks} of the page's encoding, each continuing
  * where the one before stopped: a replay page holds them all, a live page gets them as they come.
@@ -33,13 +36,18 @@ import rp1.simulator.world.WorldListener;
  */
 public final class RunTrace implements WorldListener, Simulation.EventListener, AutoCloseable {
     private final Simulation simulation;
+    private final Scheduler scheduler;
     private final Chunk chunk = new Chunk();
-    /** The latest capture, waiting for the next one at another time (or the end) to become a frame. */
-    private Capture pending;
+    /** The capture queued for the latest change, and the time it runs at. */
+    private TaskHandle queued = TaskHandle.NONE;
+    private double queuedTime;
+    /** The latest time of a change that came while a capture at an earlier time was queued. */
+    private double later = Double.NEGATIVE_INFINITY;
     private boolean closed;
 
     private RunTrace(Simulation simulation) {
         this.simulation = simulation;
+        this.scheduler = simulation.getScheduler();
     }
 
     /**
@@ -60,18 +68,39 @@ public final class RunTrace implements WorldListener, Simulation.EventListener, 
         return j.endObject().toString();
     }
 
+    /**
+     * On the thread running tasks: the world changed. One capture is queued for the time of the
+     * change, an observer that runs after every model task due then, so a frame shows the world as
+     * that time left it, however many robots moved at it.
+     */
     @Override
     public synchronized void worldChanged(World world, double simTime) {
+        double t = Double.isNaN(simTime) ? scheduler.recordedTime() : simTime;
         if (closed) {
             return;
         }
-        // The recorded time, not now(): now() brings a paced clock up to date, which an observer must not do.
-        double t = Double.isNaN(simTime) ? simulation.getScheduler().recordedTime() : simTime;
-        Capture next = Capture.of(WorldSnapshot.of(world, t));
-        if (pending != null && pending.snapshot().simTime() != t) {
-            chunk.frame(pending);
+        if (!queued.isScheduled()) {
+            queue(t);
+        } else if (t > queuedTime) {
+            // The capture queued is due first; the one for this change follows it.
+            later = Math.max(later, t);
         }
-        pending = next;
+    }
+
+    private void queue(double t) {
+        queuedTime = t;
+        queued = scheduler.observeAt(t, this::capture);
+    }
+
+    private synchronized void capture(double simTime) {
+        if (closed) {
+            return;
+        }
+        chunk.frame(Capture.of(WorldSnapshot.of(simulation.getWorld(), simTime)));
+        if (later > simTime) {
+            queue(later);
+        }
+        later = Double.NEGATIVE_INFINITY;
     }
 
     @Override
@@ -81,22 +110,23 @@ public final class RunTrace implements WorldListener, Simulation.EventListener, 
         }
     }
 
-    /**
-     * What was gathered since the last drain, as one chunk of JSON (docs/recording.md). The latest
-     * change is made a frame first, so a live page shows it; a later change at the same time makes
-     * another frame at that time, which the page shows instead.
-     */
+    /** What was gathered since the last drain, as one chunk of JSON (docs/recording.md). Any thread. */
     public synchronized String drain() {
-        if (pending != null) {
-            chunk.frame(pending);
-            pending = null;
-        }
         return chunk.take();
     }
 
-    /** Stops tracing; what was gathered can still be drained. */
+    /**
+     * Stops tracing, once the simulation has stopped: a capture still queued (the run stopped at its
+     * time, before its observers ran) is taken now. What was gathered can still be drained.
+     */
     @Override
     public synchronized void close() {
+        if (closed) {
+            return;
+        }
+        if (queued.cancel()) {
+            chunk.frame(Capture.of(WorldSnapshot.of(simulation.getWorld(), queuedTime)));
+        }
         closed = true;
         simulation.getWorld().removeListener(this);
     }
