@@ -1,6 +1,7 @@
 package rp1.web;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.BufferedReader;
@@ -15,6 +16,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Properties;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -25,6 +27,8 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 import rp1.rossum.event.RsMouseClickEvent;
+import rp1.simulator.config.ConfigException;
+import rp1.simulator.config.ServerConfig;
 import rp1.simulator.launch.LaunchOptions;
 import rp1.simulator.launch.RunningServer;
 
@@ -76,6 +80,18 @@ class LiveViewTest {
             assertTrue(w.frames.get() > 100, "a watcher got only " + w.frames.get() + " frames");
             assertEquals(watchers.get(0).frames.get(), w.frames.get(), "every watcher gets every frame");
         }
+    }
+
+    @Test
+    void viewPortIsOffByDefaultAndAPortOtherwise() throws Exception {
+        Properties p = new Properties();
+        p.setProperty("floorPlanFileName", "WhiteRoom.txt");
+        assertEquals(0, ServerConfig.from(p, "t.ini", null).viewPort, "off by default");
+        p.setProperty("viewPort", "8080");
+        assertEquals(8080, ServerConfig.from(p, "t.ini", null).viewPort);
+        p.setProperty("viewPort", "http");
+        ConfigException e = assertThrows(ConfigException.class, () -> ServerConfig.from(p, "t.ini", null));
+        assertTrue(e.getMessage().contains("viewPort"), e.getMessage());
     }
 
     @Test
