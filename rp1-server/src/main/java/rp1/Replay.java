@@ -5,7 +5,6 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
-import java.util.List;
 import java.util.Locale;
 
 import rp1.rossum.RsLogAdapter;
@@ -17,7 +16,7 @@ import rp1.simulator.record.Replayer;
 import rp1.simulator.snapshot.WorldSnapshot;
 import rp1.view.Pictures;
 import rp1.view.Renderer;
-import rp1.web.Page;
+import rp1.web.ReplayPage;
 import rp1.web.RunTrace;
 
 /**
@@ -84,9 +83,7 @@ public final class Replay {
                 Pictures.writePng(Pictures.render(renderer, snapshot), o.snapshot);
             }
             if (trace != null) {
-                trace.close();
-                String title = o.recording.getFileName().toString();
-                Files.writeString(o.html, Page.replay(title, trace.planJson(), List.of(trace.drain()), outcome.time()));
+                ReplayPage.write(trace, o.recording.getFileName().toString(), outcome.time(), o.html);
             }
             return report(recording, outcome, o, out, err);
         } catch (RecordingException | IOException e) {

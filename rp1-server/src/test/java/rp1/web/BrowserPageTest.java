@@ -141,6 +141,25 @@ class BrowserPageTest {
         assertTrue(server.awaitExit(10, TimeUnit.SECONDS).isPresent());
     }
 
+    @Test
+    void theSweepIndexSortsByAnyColumnAndLeadsToEachRunsReplay(@TempDir Path sweep) throws Exception {
+        SweepIndexTest.sweep(sweep);
+        SweepIndex.write(sweep, true);
+        browser.open(sweep.resolve(SweepIndex.NAME).toUri().toString());
+        browser.driver().findElement(By.xpath("//table[@id='runs']//th[text()='distance']")).click();
+        assertEquals("2", browser.js("return rp1index.rows()[0][0]"), "the shorter distance first");
+        browser.driver().findElement(By.xpath("//table[@id='runs']//th[text()='distance']")).click();
+        assertEquals("1", browser.js("return rp1index.rows()[0][0]"), "then the longer");
+        browser.driver().findElement(By.xpath("//table[@id='runs']//th[text()='end_reason']")).click();
+        assertEquals("2", browser.js("return rp1index.rows()[0][0]"), "text sorts as text: client failed... first");
+        assertEquals(List.of(), browser.consoleErrors());
+
+        browser.driver().findElement(By.linkText("replay")).click();
+        awaitTrue(() -> browser.driver().getCurrentUrl().endsWith("runs/1-WhiteRoom/replay.html"), "the run's page opens");
+        assertTrue(browser.number("return rp1.frames()") > 100);
+        assertEquals(List.of(), browser.consoleErrors());
+    }
+
     private static void awaitTrue(BooleanSupplier condition, String what) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (!condition.getAsBoolean()) {
