@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
@@ -87,6 +88,21 @@ class BrowserPageTest {
         assertEquals(expected.y(), drawn.get("y").doubleValue(), 1e-4, "y");
         assertEquals(expected.theta(), drawn.get("theta").doubleValue(), 1e-4, "heading");
         assertTrue(Math.hypot(expected.x() - 2.5, expected.y() - 2.5) > 0.3, "by then it has left home");
+    }
+
+    @Test
+    void thePointerOnARobotShowsItsNameAndPose() {
+        browser.js("rp1.seek(10)");
+        WebElement canvas = browser.driver().findElement(By.id("canvas"));
+        @SuppressWarnings("unchecked")
+        List<Number> at = (List<Number>) browser.js("var r = arguments[0].getBoundingClientRect(), q = rp1.drawnPose(1);"
+                + " var p = rp1.pixelOf(q.x, q.y); return [p[0] - r.left - r.width / 2, p[1] - r.top - r.height / 2];", canvas);
+        new Actions(browser.driver()).moveToElement(canvas, at.get(0).intValue(), at.get(1).intValue()).perform();
+        WebElement tip = browser.driver().findElement(By.id("tip"));
+        assertTrue(tip.isDisplayed(), "a tip shows");
+        String x = String.format(Locale.ROOT, "x = %.4f m", browser.number("return rp1.drawnPose(1).x"));
+        assertTrue(tip.getText().startsWith("Wanderer") && tip.getText().contains(x), tip.getText());
+        assertTrue(tip.getText().contains("range sensor"), tip.getText());
     }
 
     @Test
