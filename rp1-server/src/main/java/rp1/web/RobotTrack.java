@@ -96,8 +96,8 @@ final class RobotTrack {
     }
 
     /** The robot has left the world (its client departed): it is off the floor from frame {@code f}. */
-    void absentUnless(int f, List<RobotSnapshot> present) {
-        if (onFloor && present.stream().noneMatch(r -> r.number() == number)) {
+    void absent(int f) {
+        if (onFloor) {
             onFloor = false;
             Encoding.append(placed, f, 0);
         }

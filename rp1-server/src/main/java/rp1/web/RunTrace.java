@@ -2,10 +2,12 @@ package rp1.web;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashSet;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import rp1.rossum.RsBodyPart;
 import rp1.rossum.RsBodyRangeSensor;
@@ -180,12 +182,16 @@ public final class RunTrace implements WorldListener, Simulation.EventListener, 
             lastNanos = nanos;
             selection(f, s);
             List<RobotSnapshot> present = s.robots();
+            Set<Integer> numbers = new HashSet<>();
             for (int i = 0; i < present.size(); i++) {
                 RobotSnapshot r = present.get(i);
+                numbers.add(r.number());
                 robots.computeIfAbsent(r.number(), n -> new RobotTrack(r)).frame(f, r, c.readings().get(i));
             }
-            for (RobotTrack t : robots.values()) {
-                t.absentUnless(f, present);
+            for (Map.Entry<Integer, RobotTrack> t : robots.entrySet()) {
+                if (!numbers.contains(t.getKey())) {
+                    t.getValue().absent(f);
+                }
             }
             IdentityHashMap<Object, Boolean> shown = new IdentityHashMap<>();
             for (TrailSnapshot t : s.trails()) {

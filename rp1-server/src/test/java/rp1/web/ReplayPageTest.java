@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.BeforeAll;
@@ -54,6 +55,18 @@ class ReplayPageTest {
         assertTrue(run.contains(" RangeSensor ") && run.contains(" MotionHalted "), "the run senses and moves:\n" + run);
         assertEquals(run, text(dir.resolve("plain.events")));
         assertEquals(run, text(dir.resolve("paged.events")));
+    }
+
+    @Test
+    void aRobotWhoseClientLeftIsOffTheFloorFromThen(@TempDir Path left) throws Exception {
+        Path run = Runs.record(left, 20.0, "dlcName=" + Leaver.class.getName(), "exitWhenClientsDone=false");
+        Path page = left.resolve("left.html");
+        replay(run.toString(), "--html", page.toString());
+        Matcher placed = Pattern.compile("\"pl\":\\[([0-9,]*)\\]").matcher(text(page));
+        assertTrue(placed.find(), "the robot's change list of being on the floor");
+        String[] changes = placed.group(1).split(",");
+        assertEquals(4, changes.length, "placed once, then gone: " + placed.group(1));
+        assertEquals(List.of("1", "0"), List.of(changes[1], changes[3]));
     }
 
     @Test

@@ -33,8 +33,10 @@ final class Runs {
     }
 
     /** Records a run of {@code seconds} into {@code dir/run.rec} (and its event log, run.events). */
-    static Path record(Path dir, double seconds) throws Exception {
-        properties(dir, seconds, "recordFileName=run.rec", "eventLogFileName=run.events");
+    static Path record(Path dir, double seconds, String... more) throws Exception {
+        List<String> lines = new ArrayList<>(List.of("recordFileName=run.rec", "eventLogFileName=run.events"));
+        lines.addAll(List.of(more));
+        properties(dir, seconds, lines.toArray(new String[0]));
         RunningServer server = start(dir, LaunchOptions.defaults());
         if (server.awaitExit(60, TimeUnit.SECONDS).isEmpty()) {
             server.stop();
