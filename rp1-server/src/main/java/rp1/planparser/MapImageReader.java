@@ -1,0 +1,141 @@
+package rp1.planparser;
+
+import java.awt.image.BufferedImage;
+import java.awt.image.ColorModel;
+import java.awt.image.IndexColorModel;
+import java.awt.image.Raster;
+import java.io.BufferedInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.util.Iterator;
+
+import javax.imageio.ImageIO;
+import javax.imageio.ImageReader;
+import javax.imageio.stream.ImageInputStream;
+
+/**
+ * Reads a map image into its occupied cells: PGM with {@link PgmReader}, anything else (PNG above all)
+ * with {@code javax.imageio}. This is the one class of the plan parser that touches
+ * {@code java.awt.image}, and only to read pixel values, which works headless (ArchitectureTest keeps
+ * image decoding here).
+ *
+ * <p>A pixel's lightness is the mean of its colour channels, each scaled to 0..1 from its own bit
+ * depth, read from the raster and not through {@code getRGB}, which would put grey images through a
+ * colour-space conversion and shift their values. A palette image's pixel is its palette entry. A
+ * fully transparent pixel is never a wall.
+ */
+final class MapImageReader {
+    private MapImageReader() {
+    }
+
+    /**
+     * The occupied cells of the image in {@code in}.
+     *
+     * @throws IOException if the image cannot be read or decoded, is not an image, or is too large
+     */
+    static OccupancyGrid read(InputStream in, MapSpec spec) throws IOException {
+        BufferedInputStream buffered = new BufferedInputStream(in, 1 << 16);
+        buffered.mark(2);
+        byte[] magic = buffered.readNBytes(2);
+        buffered.reset();
+        if (PgmReader.isPgm(magic)) {
+            return PgmReader.read(buffered, spec);
+        }
+        return cells(decode(buffered), spec);
+    }
+
+    private static BufferedImage decode(InputStream in) throws IOException {
+        try (ImageInputStream stream = ImageIO.createImageInputStream(in)) {
+            Iterator<ImageReader> readers = stream == null ? null : ImageIO.getImageReaders(stream);
+            if (readers == null || !readers.hasNext()) {
+                throw new IOException("not an image this server can read (PGM, PNG, or another format of"
+                        + " javax.imageio)");
+            }
+            ImageReader reader = readers.next();
+            try {
+                reader.setInput(stream, true, true);
+                long pixels = (long) reader.getWidth(0) * reader.getHeight(0);
+                if (pixels > OccupancyGrid.MAX_CELLS) {
+                    throw new IOException("image of " + reader.getWidth(0) + " × " + reader.getHeight(0)
+                            + " pixels: a map may have at most " + OccupancyGrid.MAX_CELLS + " pixels");
+                }
+                return reader.read(0);
+            } finally {
+                reader.dispose();
+            }
+        }
+    }
+
+    private static OccupancyGrid cells(BufferedImage image, MapSpec spec) {
+        OccupancyGrid grid = new OccupancyGrid(image.getWidth(), image.getHeight());
+        ColorModel model = image.getColorModel();
+        Raster raster = image.getRaster();
+        Lightness lightness = model instanceof IndexColorModel
+                ? new PaletteLightness((IndexColorModel) model, raster)
+                : new ChannelLightness(model, raster);
+        for (int row = 0; row < grid.height(); row++) {
+            for (int column = 0; column < grid.width(); column++) {
+                double l = lightness.at(column, row);
+                if (!Double.isNaN(l) && spec.isOccupied(l)) {
+                    grid.occupy(column, row);
+                }
+            }
+        }
+        return grid;
+    }
+
+    /** A pixel's lightness, 0 to 1, or NaN if it is fully transparent. */
+    private interface Lightness {
+        double at(int column, int row);
+    }
+
+    /** Palette images (1-bit and other indexed PNGs): the pixel is an index into the palette. */
+    private static final class PaletteLightness implements Lightness {
+        private final IndexColorModel palette;
+        private final Raster raster;
+
+        PaletteLightness(IndexColorModel palette, Raster raster) {
+            this.palette = palette;
+            this.raster = raster;
+        }
+
+        @Override
+        public double at(int column, int row) {
+            int i = raster.getSample(column, row, 0);
+            if (palette.getAlpha(i) == 0) {
+                return Double.NaN;
+            }
+            return (palette.getRed(i) + palette.getGreen(i) + palette.getBlue(i)) / (3.0 * 255.0);
+        }
+    }
+
+    /** Grey, grey and alpha, RGB, RGBA: colour channels averaged, the alpha channel (if any) last. */
+    private static final class ChannelLightness implements Lightness {
+        private final Raster raster;
+        private final int colours;
+        private final boolean alpha;
+        private final double[] scale;
+
+        ChannelLightness(ColorModel model, Raster raster) {
+            this.raster = raster;
+            this.alpha = model.hasAlpha();
+            this.colours = model.getNumColorComponents();
+            this.scale = new double[raster.getNumBands()];
+            for (int b = 0; b < scale.length; b++) {
+                scale[b] = 1.0 / ((1L << raster.getSampleModel().getSampleSize(b)) - 1);
+            }
+        }
+
+        @Override
+        public double at(int column, int row) {
+            if (alpha && raster.getSample(column, row, colours) == 0) {
+                return Double.NaN;
+            }
+            double sum = 0;
+            for (int b = 0; b < colours; b++) {
+                sum += raster.getSample(column, row, b) * scale[b];
+            }
+            return sum / colours;
+        }
+    }
+}
