@@ -84,7 +84,7 @@ final class BitmapDeclaration extends Declaration {
                 "the length of one pixel's side");
         double r = in.length(list, 0);
         if (!(r > 0)) {
-            throw in.lexer().error(list.tokens()[0], "Resolution must be above zero, found " + list.values()[0]);
+            throw in.lexer().error(list.tokens()[0], "Resolution must be above zero, found " + list.tokens()[0].text());
         }
         resolution = r;
     }
@@ -105,7 +105,7 @@ final class BitmapDeclaration extends Declaration {
         NumberList list = in.numbers(1, "Invalid number of parameters in threshold specification", "0 to 1");
         double t = list.values()[0];
         if (t > 1) {
-            throw in.lexer().error(list.tokens()[0], "A threshold must be between 0 and 1, found " + t);
+            throw in.lexer().error(list.tokens()[0], "A threshold must be between 0 and 1, found " + list.tokens()[0].text());
         }
         return t;
     }
