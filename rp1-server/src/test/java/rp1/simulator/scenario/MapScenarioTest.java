@@ -4,12 +4,20 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.image.BufferedImage;
+import java.awt.image.Raster;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.Set;
+
+import javax.imageio.ImageIO;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
+import rp1.planparser.StageMaps;
 import rp1.rossum.RsPlan;
+import rp1.rossum.RsSegment;
 import rp1.rossum.RsWall;
 import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.event.RsPlacementEvent;
@@ -89,5 +97,61 @@ class MapScenarioTest {
                 assertArrayEquals(parsed.getWallArray()[i].getGeometry(), walls[i].getGeometry(), 1e-12);
             }
         }
+    }
+
+    @Test
+    void inStagesCaveARobotDrivesFromFreeSpaceUntilItTouchesTheRock(@TempDir Path dir) throws Exception {
+        StageMaps.extract(dir, Set.of("cave.png"));
+        BufferedImage image = ImageIO.read(dir.resolve("cave.png").toFile());
+        double resolution = 16.0 / image.getWidth();
+        double[] start = freeSpot(image.getRaster(), resolution, 0.5);
+        String plan = "bitmap cave { image: \"" + dir.resolve("cave.png").toString().replace("\\", "\\\\")
+                + "\"; resolution: " + resolution + "; }\nplacement start { geometry: " + start[0] + ", " + start[1]
+                + ", 0, 0.1; }\n";
+        try (Scenario s = Scenario.lockstep(plan)) {
+            RsMotionHaltedEvent halted = drive(s, "start", 40.0);
+            assertEquals(RsMotionHaltedEvent.HALTED_ON_COLLISION, halted.causeOfHalt, "the cave is closed to the east");
+            assertTrue(halted.x > start[0] + 0.3, "it drove: from " + start[0] + " to " + halted.x);
+            assertEquals(start[1], halted.y, 1e-9);
+            double clearance = clearance(Scenario.plan(plan), halted.x, halted.y);
+            assertEquals(Bodies.RADIUS, clearance, 0.0015, "touching a wall of black pixels, not inside one");
+        }
+    }
+
+    /** The first point (on a 10-pixel lattice) with no black pixel within {@code radius} metres. */
+    private static double[] freeSpot(Raster r, double resolution, double radius) {
+        int reach = (int) Math.ceil(radius / resolution);
+        for (int row = reach; row < r.getHeight() - reach; row += 10) {
+            for (int col = reach; col < r.getWidth() - reach; col += 10) {
+                if (clear(r, col, row, reach)) {
+                    return new double[] {(col + 0.5) * resolution, (r.getHeight() - row - 0.5) * resolution};
+                }
+            }
+        }
+        throw new AssertionError("no free spot in the map");
+    }
+
+    private static boolean clear(Raster r, int col, int row, int reach) {
+        for (int dr = -reach; dr <= reach; dr++) {
+            for (int dc = -reach; dc <= reach; dc++) {
+                if (dr * dr + dc * dc <= reach * reach && r.getSample(col + dc, row + dr, 0) < 128) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /** Distance from (x, y) to the nearest wall outline. */
+    private static double clearance(RsPlan plan, double x, double y) {
+        double best = Double.POSITIVE_INFINITY;
+        for (RsWall w : plan.getWallArray()) {
+            for (RsSegment g : w.getSegmentArray()) {
+                double len2 = g.v.x * g.v.x + g.v.y * g.v.y;
+                double t = Math.max(0, Math.min(1, ((x - g.x) * g.v.x + (y - g.y) * g.v.y) / len2));
+                best = Math.min(best, Math.hypot(x - g.x - t * g.v.x, y - g.y - t * g.v.y));
+            }
+        }
+        return best;
     }
 }
