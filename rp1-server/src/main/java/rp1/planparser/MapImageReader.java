@@ -12,6 +12,7 @@ import java.util.Iterator;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
+import javax.imageio.stream.MemoryCacheImageInputStream;
 
 /**
  * Reads a map image into its occupied cells: PGM with {@link PgmReader}, anything else (PNG above all)
@@ -45,9 +46,10 @@ final class MapImageReader {
     }
 
     private static BufferedImage decode(InputStream in) throws IOException {
-        try (ImageInputStream stream = ImageIO.createImageInputStream(in)) {
-            Iterator<ImageReader> readers = stream == null ? null : ImageIO.getImageReaders(stream);
-            if (readers == null || !readers.hasNext()) {
+        // Cached in memory, not in a temporary file as ImageIO.createImageInputStream may choose to.
+        try (ImageInputStream stream = new MemoryCacheImageInputStream(in)) {
+            Iterator<ImageReader> readers = ImageIO.getImageReaders(stream);
+            if (!readers.hasNext()) {
                 throw new IOException("not an image this server can read (PGM, PNG, or another format of"
                         + " javax.imageio)");
             }
