@@ -25,13 +25,14 @@ class StageMapsTest {
     Path dir;
 
     /**
-     * @param metres the image's width in Stage's world files (cave: 16 m as in fasr.world; hospital_section:
-     *     40 m, everything.world; autolab: 20 m, autolab.world; SFU: 180 m, circuit.world)
+     * @param metres the image's width in Stage's world files (cave: 16 m as in fasr.world, cave_filled as in
+     *     benchmark/cave.world; hospital_section: 40 m, everything.world; hospital: 140 m,
+     *     benchmark/hospital.world; autolab: 20 m, autolab.world; SFU: 180 m, circuit.world)
      * @param maxWalls what "far fewer walls than black pixels" means for this map
      */
     @ParameterizedTest(name = "{0} at {1} m")
-    @CsvSource({"cave.png, 16, 2000", "hospital_section.png, 40, 4000", "autolab.png, 20, 4000",
-            "SFU_1200x615.png, 180, 20000"})
+    @CsvSource({"cave.png, 16, 2000", "cave_filled.png, 16, 2000", "hospital_section.png, 40, 4000",
+            "hospital.png, 140, 20000", "autolab.png, 20, 4000", "SFU_1200x615.png, 180, 20000"})
     void aStageMapBecomesWallsCoveringExactlyItsBlackPixels(String image, double metres, int maxWalls) throws Exception {
         StageMaps.extract(dir, Set.of(image));
         MapSpec spec;
