@@ -2,6 +2,7 @@ package rp1.planparser;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.Locale;
 
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsWall;
@@ -17,7 +18,7 @@ final class MapFilePlan {
 
     /** Whether {@code fileName} names a map file ({@code .yaml} or {@code .yml}) rather than plan text. */
     static boolean isMapFile(String fileName) {
-        String lower = fileName == null ? "" : fileName.toLowerCase(java.util.Locale.ROOT);
+        String lower = fileName == null ? "" : fileName.toLowerCase(Locale.ROOT);
         return lower.endsWith(".yaml") || lower.endsWith(".yml");
     }
 
