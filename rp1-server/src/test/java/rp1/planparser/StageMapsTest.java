@@ -18,7 +18,8 @@ import rp1.rossum.RsWall;
 
 /**
  * Stage's real maps, at the sizes Stage's own worlds give them, become plans whose walls cover exactly
- * the black pixels, in far fewer walls than pixels. Skipped, with the reason, without ../shared.
+ * the black pixels, in far fewer walls than pixels. Skipped, with the reason, without Stage's archive
+ * ({@link StageMaps}).
  */
 class StageMapsTest {
     @TempDir
