@@ -73,11 +73,14 @@ final class MapImageReader {
         ColorModel model = image.getColorModel();
         Raster raster = image.getRaster();
         Lightness lightness = model instanceof IndexColorModel
-                ? new PaletteLightness((IndexColorModel) model, raster)
+                ? new PaletteLightness((IndexColorModel) model)
                 : new ChannelLightness(model, raster);
+        int bands = raster.getNumBands();
+        int[] samples = new int[grid.width() * bands];
         for (int row = 0; row < grid.height(); row++) {
+            raster.getPixels(0, row, grid.width(), 1, samples);
             for (int column = 0; column < grid.width(); column++) {
-                double l = lightness.at(column, row);
+                double l = lightness.of(samples, column * bands);
                 if (!Double.isNaN(l) && spec.isOccupied(l)) {
                     grid.occupy(column, row);
                 }
@@ -86,24 +89,22 @@ final class MapImageReader {
         return grid;
     }
 
-    /** A pixel's lightness, 0 to 1, or NaN if it is fully transparent. */
+    /** A pixel's lightness, 0 to 1, or NaN if it is fully transparent, from its samples at {@code at}. */
     private interface Lightness {
-        double at(int column, int row);
+        double of(int[] samples, int at);
     }
 
     /** Palette images (1-bit and other indexed PNGs): the pixel is an index into the palette. */
     private static final class PaletteLightness implements Lightness {
         private final IndexColorModel palette;
-        private final Raster raster;
 
-        PaletteLightness(IndexColorModel palette, Raster raster) {
+        PaletteLightness(IndexColorModel palette) {
             this.palette = palette;
-            this.raster = raster;
         }
 
         @Override
-        public double at(int column, int row) {
-            int i = raster.getSample(column, row, 0);
+        public double of(int[] samples, int at) {
+            int i = samples[at];
             if (palette.getAlpha(i) == 0) {
                 return Double.NaN;
             }
@@ -113,13 +114,11 @@ final class MapImageReader {
 
     /** Grey, grey and alpha, RGB, RGBA: colour channels averaged, the alpha channel (if any) last. */
     private static final class ChannelLightness implements Lightness {
-        private final Raster raster;
         private final int colours;
         private final boolean alpha;
         private final double[] scale;
 
         ChannelLightness(ColorModel model, Raster raster) {
-            this.raster = raster;
             this.alpha = model.hasAlpha();
             this.colours = model.getNumColorComponents();
             this.scale = new double[raster.getNumBands()];
@@ -129,13 +128,13 @@ final class MapImageReader {
         }
 
         @Override
-        public double at(int column, int row) {
-            if (alpha && raster.getSample(column, row, colours) == 0) {
+        public double of(int[] samples, int at) {
+            if (alpha && samples[at + colours] == 0) {
                 return Double.NaN;
             }
             double sum = 0;
             for (int b = 0; b < colours; b++) {
-                sum += raster.getSample(column, row, b) * scale[b];
+                sum += samples[at + b] * scale[b];
             }
             return sum / colours;
         }
