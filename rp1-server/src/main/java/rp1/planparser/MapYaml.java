@@ -116,14 +116,17 @@ final class MapYaml {
         }
     }
 
-    /** The line without a trailing comment: a '#' at the start or after white space, outside quotes. */
+    /**
+     * The line without a trailing comment: a '#' at the start or after white space, outside quotes. A
+     * quote starts a string only where a value or list item starts ({@code bob's.pgm} is plain).
+     */
     private String withoutComment(String line, int number) throws RsParsingException {
         char quote = 0;
         for (int i = 0; i < line.length(); i++) {
             char c = line.charAt(i);
             if (quote != 0) {
                 quote = c == quote ? 0 : quote;
-            } else if (c == '"' || c == '\'') {
+            } else if ((c == '"' || c == '\'') && (i == 0 || " \t[,".indexOf(line.charAt(i - 1)) >= 0)) {
                 quote = c;
             } else if (c == '#' && (i == 0 || Character.isWhitespace(line.charAt(i - 1)))) {
                 return line.substring(0, i);

@@ -28,6 +28,8 @@ class MapYamlTest {
                 + "negate: true\nmode: trinary\n");
         assertEquals(new MapSpec("my map.png", 0.1, 0, 0, 0, 0.65, 0.196, true), s);
         assertEquals("a#b.pgm", spec("image: a#b.pgm\nresolution: 1\n").image(), "a # inside a word is not a comment");
+        assertEquals("bob's map.pgm", spec("image: bob's map.pgm # a comment\nresolution: 1\n").image(),
+                "an apostrophe inside a plain value starts no string");
     }
 
     @Test
