@@ -22,8 +22,14 @@ final class MapSource {
     private MapSource() {
     }
 
-    /** Where the image {@code image}, named in the file at {@code location}, is: a path or a URL. */
+    /**
+     * Where the file {@code image}, named in the file at {@code location}, is: a path or a URL. A URL or
+     * an absolute path is taken as it is; anything else is relative to the naming file's folder.
+     */
     static String resolve(String location, String image) {
+        if (URL_SCHEME.matcher(image).matches() || isAbsolutePath(image)) {
+            return image;
+        }
         if (URL_SCHEME.matcher(location).matches()) {
             try {
                 return new URL(new URL(location), image).toString();
@@ -32,14 +38,18 @@ final class MapSource {
             }
         }
         try {
-            Path named = Path.of(image);
-            if (named.isAbsolute()) {
-                return image;
-            }
             Path parent = Path.of(location).getParent();
-            return parent == null ? image : parent.resolve(named).toString();
+            return parent == null ? image : parent.resolve(image).toString();
         } catch (InvalidPathException e) {
             return image;
+        }
+    }
+
+    private static boolean isAbsolutePath(String name) {
+        try {
+            return Path.of(name).isAbsolute();
+        } catch (InvalidPathException e) {
+            return false;
         }
     }
 

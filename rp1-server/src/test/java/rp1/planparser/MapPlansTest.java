@@ -180,6 +180,10 @@ class MapPlansTest {
         String location = dir.resolve("plan.txt").toUri().toString();
         RsPlan plan = RsPlanParser.parse("bitmap { map: \"maps/u.yaml\"; }", location);
         assertEquals(1, plan.getWallArray().length);
+        String absolute = sub.resolve("u.pgm").toString().replace("\\", "\\\\");
+        RsPlan fromAbsolute = RsPlanParser.parse("bitmap { image: \"" + absolute + "\"; resolution: 1; }",
+                "jar:file:/nowhere/rp1.jar!/FloorPlans/plan.txt");
+        assertEquals(1, fromAbsolute.getWallArray().length, "an absolute path is a path, whatever names it");
     }
 
     @Test
