@@ -43,11 +43,32 @@ class ArchitectureTest {
     private static final Pattern MODEL_ACCESS = Pattern.compile(
             "\\.(?:getScheduler|getInputs|getSessions)\\(|\\.getWorld\\(\\)(?!\\.getPlan\\(\\))");
 
+    /**
+     * The one class of the plan parser that decodes map images (PNG through {@code javax.imageio}, whose
+     * pictures are {@code java.awt.image} rasters; both work headless). The rest of the parser, like the
+     * core, uses {@code java.awt.Color} only.
+     */
+    private static final String IMAGE_DECODER = "rp1-server/src/main/java/rp1/planparser/MapImageReader.java";
+
     @Test
     void theCoreUsesNoAwtOrSwingButColor() throws IOException {
-        List<String> found = violations("rp1/simulator",
-                r -> (r.isIn("java.awt") || r.isIn("javax.swing")) && !r.name().equals("java.awt.Color"));
+        List<String> found = violations("rp1/simulator", ArchitectureTest::awtBeyondColor);
         assertEquals("", String.join("\n", found), "rp1.simulator.* must run headless (java.awt.Color only)");
+    }
+
+    @Test
+    void thePlanParserDecodesImagesInOneClassAndUsesNoOtherAwtButColor() throws IOException {
+        List<String> found = violations("rp1/planparser", r -> awtBeyondColor(r) && !(r.where().startsWith(IMAGE_DECODER + ":")
+                && (r.isIn("java.awt.image") || r.isIn("javax.imageio"))));
+        assertEquals("", String.join("\n", found), "rp1.planparser uses java.awt.Color, and java.awt.image and"
+                + " javax.imageio only in " + IMAGE_DECODER);
+        assertTrue(awtBeyondColor(new References.Reference("javax.imageio.ImageIO", "X.java:1")));
+        assertTrue(awtBeyondColor(new References.Reference("java.awt.image.BufferedImage", "X.java:1")));
+    }
+
+    /** AWT, Swing or image decoding, other than {@code java.awt.Color}. */
+    private static boolean awtBeyondColor(References.Reference r) {
+        return (r.isIn("java.awt") || r.isIn("javax.swing") || r.isIn("javax.imageio")) && !r.name().equals("java.awt.Color");
     }
 
     @Test
