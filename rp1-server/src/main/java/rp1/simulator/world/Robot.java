@@ -44,20 +44,11 @@ public final class Robot {
     private RsMotionRequest pending;
     private boolean moving;
     private boolean placementEvaluation;
-    /** When the robot is next evaluated (NaN: not due); kept by the {@link MotionStepper}. */
-    private double nextEvaluation = Double.NaN;
-    /** The box the {@link RobotIndex} filed the robot under: x0, y0, x1, y1. */
-    private final double[] indexBox = new double[4];
-    private boolean indexed;
     /**
      * Contact sensors other robots ran into while this one stood still, each with the name of the robot
      * and the time it stops, when the sensor is pressed; in the order the contacts were found.
      */
     private final List<Touch> touched = new ArrayList<>();
-    /** The motion task's run ({@link MotionStepper}) in which this robot's current motion started. */
-    private long motionStartedIn = -1;
-    /** The motion task's run in which this robot last searched for contacts ({@link RobotContacts}). */
-    private long searchedIn = -1;
 
     Robot(int number, RsBody body, EventSink events) {
         this.number = number;
@@ -96,34 +87,6 @@ public final class Robot {
     RsTransform poseAt(double time) {
         RsMotion m = body.getMotion();
         return m == null ? new RsTransform() : m.getPoseAtTime(time);
-    }
-
-    double nextEvaluation() {
-        return nextEvaluation;
-    }
-
-    boolean isDue() {
-        return !Double.isNaN(nextEvaluation);
-    }
-
-    void setNextEvaluation(double time) {
-        nextEvaluation = time;
-    }
-
-    void clearNextEvaluation() {
-        nextEvaluation = Double.NaN;
-    }
-
-    double[] indexBox() {
-        return indexBox;
-    }
-
-    boolean isIndexed() {
-        return indexed;
-    }
-
-    void setIndexed(boolean indexed) {
-        this.indexed = indexed;
     }
 
     /** The order in which the robot joined the world, from 1. */
@@ -173,6 +136,15 @@ public final class Robot {
 
     RsMotion motion() {
         return body.getMotion();
+    }
+
+    /** Upper bound of the speed of any point of the robot's shapes under its current motion, m/s. */
+    double speedBound() {
+        RsMotion m = body.getMotion();
+        if (!moving || m == null) {
+            return 0.0;
+        }
+        return Math.abs(m.getVelocity()) + Math.abs(m.getTurnRate()) * shapes.reach();
     }
 
     /** The pose at the motion's current time (identity before the first placement). */
@@ -324,22 +296,6 @@ public final class Robot {
             }
         }
         touched.removeIf(t -> t.time <= time);
-    }
-
-    long motionStartedIn() {
-        return motionStartedIn;
-    }
-
-    void setMotionStartedIn(long run) {
-        motionStartedIn = run;
-    }
-
-    long searchedIn() {
-        return searchedIn;
-    }
-
-    void setSearchedIn(long run) {
-        searchedIn = run;
     }
 
     /** A halt request: any waiting request is dropped and a motion under way stops at {@code time}. */
