@@ -163,11 +163,9 @@ final class MotionStepper implements Task {
             }
         }
         for (Robot r : group) {
-            if (r.isTouched()) {
-                r.pressTouched(time);
-                if (r.isTouched() && !r.isMoving()) {
-                    evaluateBy(r, r.nextTouch());
-                }
+            double next = contacts.pressTouched(r, time);
+            if (!Double.isNaN(next) && !r.isMoving()) {
+                evaluateBy(r, next);
             }
         }
         requeue();

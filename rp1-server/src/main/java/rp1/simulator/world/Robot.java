@@ -5,7 +5,6 @@ import java.util.Collections;
 import java.util.List;
 
 import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyContactSensor;
 import rp1.rossum.RsBodyPainter;
 import rp1.rossum.RsBodyPart;
 import rp1.rossum.RsBodySensor;
@@ -44,11 +43,6 @@ public final class Robot {
     private RsMotionRequest pending;
     private boolean moving;
     private boolean placementEvaluation;
-    /**
-     * Contact sensors other robots ran into while this one stood still, each with the name of the robot
-     * and the time it stops, when the sensor is pressed; in the order the contacts were found.
-     */
-    private final List<Touch> touched = new ArrayList<>();
 
     Robot(int number, RsBody body, EventSink events) {
         this.number = number;
@@ -249,55 +243,6 @@ public final class Robot {
         return Double.NaN;
     }
 
-    /**
-     * Another robot ran into this one, which stands still: {@code sensors} touch it and go hot with its
-     * name at {@code time}, when the other robot has stopped. Added to those of any other robot that
-     * ran into this one before they were pressed.
-     */
-    void touchedAt(double time, List<RsBodyContactSensor> sensors, String name) {
-        for (RsBodyContactSensor s : sensors) {
-            touched.add(new Touch(s, name, time));
-        }
-    }
-
-    /** Whether contact sensors are waiting to be pressed by a robot that ran into this one. */
-    boolean isTouched() {
-        return !touched.isEmpty();
-    }
-
-    /** The earliest time contact sensors wait to be pressed at (only when {@link #isTouched()}). */
-    double nextTouch() {
-        double first = Double.POSITIVE_INFINITY;
-        for (Touch t : touched) {
-            first = Math.min(first, t.time);
-        }
-        return first;
-    }
-
-    /**
-     * Presses the contact sensors other robots ran into whose time has come by {@code time}: those not
-     * hot yet go hot with the name of the robot touching them (the earliest, if several; one event
-     * each, in part order). They are released as any contact sensor, when this robot next starts a
-     * motion. Sensors whose robot stops later keep waiting.
-     */
-    void pressTouched(double time) {
-        for (RsBodySensor s : body.getBodySensorArray()) {
-            Touch first = null;
-            for (Touch t : touched) {
-                if (t.sensor == s && t.time <= time && (first == null || t.time < first.time)) {
-                    first = t;
-                }
-            }
-            if (first != null && !s.getHot()) {
-                RsBodyContactSensor c = first.sensor;
-                c.setCollision(true, first.by);
-                c.setHot(true);
-                events.sendIfSubscribed(c.getStateChangeEvent(time));
-            }
-        }
-        touched.removeIf(t -> t.time <= time);
-    }
-
     /** A halt request: any waiting request is dropped and a motion under way stops at {@code time}. */
     void halt(double time) {
         pending = null;
@@ -376,19 +321,6 @@ public final class Robot {
     /** The robot's shapes at {@code pose}, as walls other robots sense and are placed against. */
     RsWall[] obstaclesAt(RsTransform pose) {
         return shapes.asWalls(pose, label);
-    }
-
-    /** A contact sensor another robot ran into, pressed with its name at the time it stops. */
-    private static final class Touch {
-        final RsBodyContactSensor sensor;
-        final String by;
-        final double time;
-
-        Touch(RsBodyContactSensor sensor, String by, double time) {
-            this.sensor = sensor;
-            this.by = by;
-            this.time = time;
-        }
     }
 
     @Override

@@ -46,6 +46,7 @@ final class RobotContacts {
     private long[] startedIn = new long[0];
     /** By robot number: the motion task's run in which the robot last searched for contacts (-1: never). */
     private long[] searchedIn = new long[0];
+    private final Touches touches = new Touches();
 
     RobotContacts(Surroundings surroundings) {
         this.surroundings = surroundings;
@@ -55,6 +56,16 @@ final class RobotContacts {
     void motionStarted(Robot r, long run) {
         int n = room(r);
         startedIn[n] = run;
+    }
+
+    /**
+     * Presses the robot's contact sensors that robots which ran into it while it stood still touch, if
+     * their time has come by {@code time}.
+     *
+     * @return the earliest time sensors still wait to be pressed at, or NaN if none wait
+     */
+    double pressTouched(Robot r, double time) {
+        return touches.press(r, time);
     }
 
     /**
@@ -113,7 +124,7 @@ final class RobotContacts {
         return b.isMoving() && b.getNumber() < a.getNumber() && searchedIn[b.getNumber()] >= startedIn[a.getNumber()];
     }
 
-    private static void resolvePair(Robot a, Robot b, double from, double to, MotionStepper stepper) {
+    private void resolvePair(Robot a, Robot b, double from, double to, MotionStepper stepper) {
         double speed = a.speedBound() + b.speedBound();
         if (speed <= 0.0) {
             return;
@@ -194,7 +205,7 @@ final class RobotContacts {
      * sensors of both that touch the other robot go hot with its name: a stopped robot's when its
      * motion ends, a robot at rest's at the time the other one stops.
      */
-    private static void stop(Robot a, Robot b, double contact, double now, MotionStepper stepper) {
+    private void stop(Robot a, Robot b, double contact, double now, MotionStepper stepper) {
         List<RsBodyContactSensor> touchingA = touching(a, b, contact);
         List<RsBodyContactSensor> touchingB = touching(b, a, contact);
         double stopA = stopOne(a, contact, now);
@@ -240,7 +251,7 @@ final class RobotContacts {
      * A robot that was stopped has exactly its touching sensors flagged, to go hot when its motion ends;
      * one at rest has them pressed when the other robot has stopped.
      */
-    private static void press(Robot r, Robot other, List<RsBodyContactSensor> touching, double ownStop, double otherStop,
+    private void press(Robot r, Robot other, List<RsBodyContactSensor> touching, double ownStop, double otherStop,
                               MotionStepper stepper) {
         if (!Double.isNaN(ownStop)) {
             stepper.evaluateBy(r, ownStop);
@@ -251,7 +262,7 @@ final class RobotContacts {
                 }
             }
         } else if (!touching.isEmpty() && !Double.isNaN(otherStop)) {
-            r.touchedAt(otherStop, touching, other.getLabel());
+            touches.add(r, otherStop, touching, other.getLabel());
             stepper.evaluateBy(r, otherStop);
         }
     }
