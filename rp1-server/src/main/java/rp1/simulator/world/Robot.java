@@ -24,7 +24,9 @@ import rp1.rossum.request.RsPainterChangeRequest;
 /**
  * One client's robot in the world: its body, whether it is placed, its motion, the motion request
  * waiting to start, and its paint trails. The motion lifecycle of behavior.md section 5.4 lives here,
- * split into the phases the {@link MotionStepper} runs for the robots due at one time.
+ * split into the phases the {@link MotionStepper} runs for the robots due at one time. What the
+ * world's other parts need to remember about a robot (when it is next evaluated, where it is filed,
+ * its contact searches) they keep themselves, by its number.
  *
  * <p>Everything here runs on the thread running the simulation's tasks (see
  * {@link rp1.simulator.scheduler.Scheduler}); a placement request marks the robot unplaced when it is
@@ -83,7 +85,7 @@ public final class Robot {
         return m == null ? new RsTransform() : m.getPoseAtTime(time);
     }
 
-    /** The order in which the robot joined the world, from 1. */
+    /** The order in which the robot joined the world, from 1 (dense: parts keep per-robot arrays by it). */
     public int getNumber() {
         return number;
     }
