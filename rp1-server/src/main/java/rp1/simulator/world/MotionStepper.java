@@ -7,7 +7,6 @@ import java.util.PriorityQueue;
 import java.util.function.DoubleConsumer;
 
 import rp1.rossum.RsPlan;
-
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
 import rp1.simulator.scheduler.TaskHandle;
@@ -44,7 +43,11 @@ final class MotionStepper implements Task {
     private double queuedTime = Double.NaN;
 
     /**
-     * @param changed told the simulated time after every run of the task
+     * @param scheduler    queues the motion task
+     * @param interval     seconds between a moving robot's evaluations (the modelling interval)
+     * @param plan         the floor plan, for the sensors
+     * @param surroundings what is near each robot
+     * @param changed      told the simulated time after every run of the task
      */
     MotionStepper(Scheduler scheduler, double interval, RsPlan plan, Surroundings surroundings, DoubleConsumer changed) {
         this.scheduler = scheduler;
