@@ -20,8 +20,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The package rules of docs/architecture.md, checked on the sources: the simulation core runs
- * headless, the world knows nothing of client sessions, and the view reaches the model only through
- * the simulation's inputs and snapshots.
+ * headless, the world knows nothing of client sessions, the world's parts do not call back into its
+ * façade, and the view reaches the model only through the simulation's inputs and snapshots.
  */
 class ArchitectureTest {
     private static final Path ROOT = Paths.get(System.getProperty("rp1.root", "."));
@@ -75,6 +75,32 @@ class ArchitectureTest {
     void theWorldDoesNotKnowSessions() throws IOException {
         List<String> found = violations("rp1/simulator/world", r -> r.isIn("rp1.simulator.session"));
         assertEquals("", String.join("\n", found), "rp1.simulator.world must not use rp1.simulator.session");
+    }
+
+    /**
+     * {@code World} is the façade over the world's parts (placements, motion, contacts, the broad
+     * phase): they answer it and never call back into it, so each can be read and changed alone.
+     * Only its listener interface names it.
+     */
+    @Test
+    void theWorldsPartsDoNotUseTheWorld() throws IOException {
+        Pattern world = Pattern.compile("\\bWorld\\b");
+        List<String> found = new ArrayList<>();
+        for (Path file : javaFiles("rp1/simulator/world")) {
+            String simple = file.getFileName().toString();
+            if (simple.equals("World.java") || simple.equals("WorldListener.java")) {
+                continue;
+            }
+            String name = name(file);
+            List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+            List<String> code = References.codeOnly(lines);
+            for (int i = 0; i < code.size(); i++) {
+                if (world.matcher(code.get(i)).find()) {
+                    found.add(name + ":" + (i + 1) + ": " + lines.get(i).trim());
+                }
+            }
+        }
+        assertEquals("", String.join("\n", found), "the world's parts must not use World");
     }
 
     @Test
