@@ -1,13 +1,21 @@
 package rp1.simulator.batch;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.OptionalInt;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.function.Consumer;
 
 import rp1.simulator.Simulation;
 import rp1.simulator.launch.ExitStatus;
@@ -18,26 +26,33 @@ import rp1.simulator.launch.StartupException;
 import rp1.simulator.launch.ViewHook;
 
 /**
- * One run of a sweep, in a process of its own: {@code java rp1.simulator.batch.SweepRun DIR} starts
- * the server with {@code DIR/run.ini} (which the sweep wrote: the user's properties with the run's
- * seed, plan and output files), waits until it stops, and leaves {@link RunReport#FILE} and
- * {@link TrailFile#FILE} in DIR. The process's exit status is the server's.
+ * One run of a sweep: starts the server with {@code DIR/run.ini} (which the sweep wrote: the user's
+ * properties with the run's configuration, seed, plan and output files), with the robot's classes
+ * from the class loader given, and, if the sweep has a {@code --client}, the client's program
+ * ({@link ExternalClient}); waits until it stops, and leaves {@link RunReport#FILE} and
+ * {@link TrailFile#FILE} in DIR. The sweep runs it in its own process ({@code --isolation loader}) or
+ * as {@code java rp1.simulator.batch.SweepRun DIR} ({@code --isolation process}), whose exit status is
+ * the server's.
  */
 public final class SweepRun {
     /** The properties a sweep writes into each run's folder. */
     public static final String PROPERTIES = "run.ini";
     /** The server's log in each run's folder. */
     public static final String LOG = "server.log";
+    /** The {@code --client} command, in the run's folder when the sweep has one. */
+    static final String CLIENT_COMMAND = "client-command.txt";
     /** How long stopping waits for a server that is starting. */
     private static final long START_WAIT_SECONDS = 30;
 
     private final Path dir;
+    private final ClassLoader loader;
     private RunStatistics statistics;
     private List<RobotResult> robots = List.of();
     private double endTime = Double.NaN;
 
-    private SweepRun(Path dir) {
+    SweepRun(Path dir, ClassLoader loader) {
         this.dir = dir;
+        this.loader = loader;
     }
 
     /** Runs the run in the folder given; the process exits with the server's status. */
@@ -46,31 +61,85 @@ public final class SweepRun {
             System.err.println("usage: java rp1.simulator.batch.SweepRun RUN-FOLDER (started by rp1.Sweep)");
             System.exit(ExitStatus.STARTUP_FAILED);
         }
-        System.exit(new SweepRun(Paths.get(args[0]).toAbsolutePath()).run());
-    }
-
-    private int run() {
         // Stopped by the sweep (a timeout, the sweep interrupted: SIGTERM), even while it starts, the
         // run still closes its recording and event log before the process ends.
         CompletableFuture<RunningServer> started = new CompletableFuture<>();
         Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnceStarted(started), "stop the run"));
-        RunningServer server = null;
+        SweepRun run = new SweepRun(Paths.get(args[0]).toAbsolutePath(), SweepRun.class.getClassLoader());
+        RunReport report;
+        try {
+            report = run.run(started::complete, Double.POSITIVE_INFINITY);
+        } catch (InterruptedException e) {
+            report = RunReport.failed("interrupted", ExitStatus.OK);
+        } finally {
+            started.complete(null);
+        }
+        System.exit(report.exitStatus());
+    }
+
+    /**
+     * Runs the run here and leaves its report and trails in its folder.
+     *
+     * @param started        told the server once it has started (to stop it from elsewhere)
+     * @param timeoutSeconds wall seconds after which the run is stopped and counted as failed
+     * @return how it went
+     */
+    RunReport run(Consumer<RunningServer> started, double timeoutSeconds) throws InterruptedException {
+        String client;
+        try {
+            client = clientCommand(dir);
+        } catch (IOException e) {
+            return report(RunReport.failed("cannot read " + CLIENT_COMMAND + ": " + e.getMessage(), ExitStatus.STARTUP_FAILED));
+        }
+        RunningServer server;
         try {
             server = ServerLauncher.start(new String[] {"-p", dir.resolve(PROPERTIES).toString()},
-                    Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch));
+                    Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch)
+                            .withClassLoader(loader));
         } catch (StartupException e) {
             return report(RunReport.failed("startup failed: " + e.getMessage(), e.getExitStatus()));
-        } finally {
-            started.complete(server);
         }
-        int status;
+        started.accept(server);
+        ExternalClient external = null;
         try {
-            status = server.awaitExit();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return ExitStatus.OK;
+            if (client != null) {
+                external = ExternalClient.start(client, dir, server);
+            }
+            OptionalInt status = Double.isInfinite(timeoutSeconds) ? OptionalInt.of(server.awaitExit())
+                    : server.awaitExit((long) (timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
+            if (status.isEmpty()) {
+                server.stop();
+                return report(RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of"
+                        + " wall time", timeoutSeconds), RunReport.TIMED_OUT));
+            }
+            List<RobotResult> results = external == null ? robots : withResults(robots, external.finish());
+            return report(new RunReport(endTime, server.getStopReason(), status.getAsInt(), results));
+        } catch (IOException e) {
+            server.stop();
+            return report(RunReport.failed("the client could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED));
+        } finally {
+            if (external != null) {
+                external.stop();
+            }
         }
-        return report(new RunReport(endTime, server.getStopReason(), status, robots));
+    }
+
+    /** The {@code --client} command the run's folder holds, or null. */
+    private static String clientCommand(Path dir) throws IOException {
+        Path file = dir.resolve(CLIENT_COMMAND);
+        return Files.exists(file) ? Files.readString(file, StandardCharsets.UTF_8).trim() : null;
+    }
+
+    /** The results an external client reported belong to its run: each robot gets them. */
+    private static List<RobotResult> withResults(List<RobotResult> robots, Map<String, Double> reported) {
+        List<RobotResult> out = new ArrayList<>();
+        for (RobotResult r : robots) {
+            Map<String, Double> results = new LinkedHashMap<>(r.results());
+            results.putAll(reported);
+            out.add(new RobotResult(r.name(), r.start(), r.end(), r.distance(), r.collisions(), r.firstCollisionTime(),
+                    r.events(), results));
+        }
+        return out;
     }
 
     /** The shutdown hook: waits until the server has started (if it is starting), then stops it cleanly. */
@@ -97,12 +166,12 @@ public final class SweepRun {
         AutoCloseable view = ViewHook.standard().open(context);
         return () -> {
             endTime = simulation.getScheduler().recordedTime();
-            robots = statistics.results(simulation.getWorld());
+            robots = statistics.results(endTime);
             view.close();
         };
     }
 
-    private int report(RunReport report) {
+    private RunReport report(RunReport report) {
         try {
             report.write(dir);
             if (statistics != null) {
@@ -112,6 +181,6 @@ public final class SweepRun {
             System.err.println("rp1.simulator.batch.SweepRun: cannot write the run's results in " + dir + ": "
                     + e.getMessage());
         }
-        return report.exitStatus();
+        return report;
     }
 }

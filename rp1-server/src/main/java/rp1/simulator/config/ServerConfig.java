@@ -8,6 +8,7 @@ import java.util.Locale;
 import java.util.OptionalLong;
 import java.util.Properties;
 import java.util.SortedMap;
+import java.util.TreeMap;
 
 /**
  * The server's settings, read from an RP1.ini-style properties file (behavior.md section 2.2, with
@@ -20,6 +21,8 @@ import java.util.SortedMap;
  * by {@link #from}, which validates every value.
  */
 public final class ServerConfig {
+    /** The prefix of the robot's parameters among the keys. */
+    public static final String PARAMETER_PREFIX = "param.";
     public static final int DEFAULT_PORT = 7758;
     /** The original caps the animation rate at 32 frames per second. */
     public static final double MAX_ANIMATION_RATE = 32.0;
@@ -85,6 +88,11 @@ public final class ServerConfig {
     public final String recordFileName;
     /** Where to write every event sent to a client, one line each (docs/recording.md), or null. */
     public final String eventLogFileName;
+    /**
+     * The robot's parameters: every {@code param.NAME} key, by NAME, with its value's first word.
+     * Loaded clients read them with {@code RsClient.getRunParameter}; a sweep varies them.
+     */
+    public final SortedMap<String, String> parameters;
     /** The properties as given (values unparsed), sorted by key: a recording keeps them. */
     public final SortedMap<String, String> given;
 
@@ -124,6 +132,7 @@ public final class ServerConfig {
         recordFileName = r.string("recordFileName");
         eventLogFileName = r.string("eventLogFileName");
         given = r.given();
+        parameters = parameters(r);
         checkConsistency(r);
     }
 
@@ -163,6 +172,30 @@ public final class ServerConfig {
      */
     public static ServerConfig from(Properties table, String source, String planOverride) throws ConfigException {
         return new ServerConfig(new PropertyReader(table, source), planOverride);
+    }
+
+    /**
+     * The {@code param.NAME} keys: accepted whatever NAME is, since they belong to the robot, not to
+     * the server (docs/properties.md).
+     */
+    private static SortedMap<String, String> parameters(PropertyReader r) throws ConfigException {
+        SortedMap<String, String> parameters = new TreeMap<>();
+        for (String key : r.given().keySet()) {
+            if (key.startsWith(PARAMETER_PREFIX)) {
+                String name = key.substring(PARAMETER_PREFIX.length());
+                if (name.isEmpty()) {
+                    throw r.error(key, r.given().get(key), "a parameter needs a name after " + PARAMETER_PREFIX);
+                }
+                String value = r.string(key);
+                parameters.put(name, value == null ? "" : value);
+            }
+        }
+        return Collections.unmodifiableSortedMap(parameters);
+    }
+
+    /** Whether {@code key} is a parameter of the robot ({@code param.NAME}), which any properties may hold. */
+    public static boolean isParameter(String key) {
+        return key.startsWith(PARAMETER_PREFIX) && key.length() > PARAMETER_PREFIX.length();
     }
 
     private static String orDefault(String v, String fallback) {

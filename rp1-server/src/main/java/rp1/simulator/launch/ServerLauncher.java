@@ -45,12 +45,12 @@ public final class ServerLauncher {
      *
      * @param args             the command line: {@code -p PROPERTIES} and {@code -f PLAN}
      * @param workingDirectory where {@code -p}, the floor plan and the log file are looked for first
-     * @param options          a port override and the view
+     * @param options          a port override, the view and the clients' class loader
      * @throws StartupException if the server cannot start; nothing is left running
      */
     public static RunningServer start(String[] args, Path workingDirectory, LaunchOptions options)
             throws StartupException {
-        ClassLoader loader = classLoader();
+        ClassLoader loader = options.loader != null ? options.loader : classLoader();
         ResourceLocator locator = new ResourceLocator(workingDirectory, loader);
         ServerConfig config = configure(args, locator);
         ServerLog log = openLog(config, workingDirectory);

@@ -82,7 +82,8 @@ class InterruptedSweepTest {
                 + " --resume to the same command:\n  rp1.Sweep " + String.join(" ", args) + " --resume"), said);
         List<String> rows = rows();
         assertEquals(2, rows.size(), rows.toString());
-        assertTrue(rows.get(1).startsWith("1," + dir.resolve("home.txt") + ",,1.0,max-simulation-time,0,"), rows.get(1));
+        assertTrue(rows.get(1).startsWith("1," + dir.resolve("home.txt") + ",runs/1-home,") && rows.get(1)
+                .contains(",0,max-simulation-time,"), rows.get(1));
         assertTrue(Files.exists(dir.resolve("out/summary.png")));
         assertTrue(Files.readString(second.resolve("recording.txt")).contains("\nend "),
                 "the run that was stopped closed its recording");
@@ -96,8 +97,8 @@ class InterruptedSweepTest {
         rows = rows();
         assertEquals(5, rows.size(), rows.toString());
         for (int seed = 1; seed <= 4; seed++) {
-            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",,1.0,max-simulation-time,0,"),
-                    rows.get(seed));
+            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",runs/" + seed + "-home,")
+                    && rows.get(seed).contains(",0,max-simulation-time,"), rows.get(seed));
         }
     }
 

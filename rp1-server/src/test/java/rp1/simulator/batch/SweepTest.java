@@ -74,13 +74,14 @@ class SweepTest {
                 + dir.resolve("home.txt"), "--jobs", "2", "--out", dir.resolve("out").toString());
         assertEquals(Sweep.RUN_FAILED, status, out.toString(StandardCharsets.UTF_8) + err);
         List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
-        assertEquals(ResultsCsv.HEADER, rows.get(0));
+        assertEquals("seed,plan,run,robot,start_x,start_y,start_heading,end_x,end_y,end_heading,end_time,distance,"
+                + "collisions,first_collision_time,events,status,reason,wall_seconds", rows.get(0));
         assertEquals(3, rows.size(), rows.toString());
-        assertTrue(rows.get(1).startsWith("5," + dir.resolve("bare.txt") + ",picky,0.0,\"client failed: client "
-                + PickyDlc.class.getName() + ": a handler failed: java.lang.Error: no placement \"\"home\"\" on this"
-                + " floor plan\",2,"), rows.get(1));
-        assertTrue(rows.get(2).startsWith("5," + dir.resolve("home.txt") + ",picky,0.0,clients-done,0,1.0,1.0,0.0,0.0,0,1,"),
-                rows.get(2));
+        assertTrue(rows.get(1).startsWith("5," + dir.resolve("bare.txt") + ",runs/5-bare,picky,,,,,,,0,0,0,,1,2,"
+                + "\"client failed: client " + PickyDlc.class.getName() + ": a handler failed: java.lang.Error: no"
+                + " placement \"\"home\"\" on this floor plan\","), rows.get(1));
+        assertTrue(rows.get(2).startsWith("5," + dir.resolve("home.txt") + ",runs/5-home,picky,1,1,0,1,1,0,0,0,0,,1,0,"
+                + "clients-done,"), rows.get(2));
         assertTrue(Files.exists(dir.resolve("out/runs/5-home/recording.txt")));
         assertTrue(Files.exists(dir.resolve("out/summary.png")));
     }
@@ -91,8 +92,8 @@ class SweepTest {
         int status = sweep("-p", p.toString(), "--seeds", "2", "--timeout", "2", "--out", dir.resolve("out").toString());
         assertEquals(Sweep.RUN_FAILED, status, out.toString(StandardCharsets.UTF_8) + err);
         List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
-        assertTrue(rows.get(1).startsWith("2," + dir.resolve("home.txt") + ",,,timeout: still running after 2 s of"
-                + " wall time,"), rows.get(1));
+        assertTrue(rows.get(1).startsWith("2," + dir.resolve("home.txt") + ",runs/2-home,"), rows.get(1));
+        assertTrue(rows.get(1).contains(",124,timeout: still running after 2 s of wall time,"), rows.get(1));
     }
 
     @Test

@@ -1,0 +1,123 @@
+package rp1.simulator.batch;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
+
+import rp1.simulator.launch.JavaCommand;
+
+/**
+ * Runs each in a Java process of its own ({@code --isolation process}): {@link SweepRun} started as
+ * {@code java rp1.simulator.batch.SweepRun DIR}, stopped if it takes longer than the timeout. For
+ * robots that cannot share a process: static state shared between instances, {@code System.exit},
+ * threads of their own that outlive a run.
+ */
+final class ProcessRuns implements RunEngine {
+    /** What the run's process printed. */
+    static final String OUTPUT = "output.txt";
+    /** How long a run that is asked to stop may take to close its files before it is killed. */
+    static final long STOP_GRACE_SECONDS = 10;
+
+    private final double timeoutSeconds;
+    private final Set<Process> running = ConcurrentHashMap.newKeySet();
+    private volatile boolean stopping;
+
+    ProcessRuns(double timeoutSeconds) {
+        this.timeoutSeconds = timeoutSeconds;
+    }
+
+    @Override
+    public RunReport run(Batch.Run run) throws IOException, InterruptedException {
+        Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(),
+                run.dir().toAbsolutePath().toString())).redirectErrorStream(true)
+                .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
+        running.add(p);
+        if (stopping) {
+            p.destroy();
+        }
+        boolean ended;
+        try {
+            ended = p.waitFor((long) (timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            stop(p);
+            throw e;
+        } finally {
+            running.remove(p);
+        }
+        if (!ended) {
+            stop(p);
+            return RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
+                    timeoutSeconds), RunReport.TIMED_OUT);
+        }
+        return report(run.dir(), p.exitValue());
+    }
+
+    /**
+     * Stops the runs going as Ctrl-C would (SIGTERM), so they close their recordings; a run still
+     * going after a grace period is killed.
+     */
+    @Override
+    public void stopAll() {
+        stopping = true;
+        running.forEach(Process::destroy);
+        Thread killer = new Thread(() -> {
+            try {
+                Thread.sleep(TimeUnit.SECONDS.toMillis(STOP_GRACE_SECONDS));
+            } catch (InterruptedException e) {
+                return;
+            }
+            running.forEach(Process::destroyForcibly);
+        }, "rp1-sweep-stop");
+        killer.setDaemon(true);
+        killer.start();
+    }
+
+    /**
+     * Stops a run as Ctrl-C would, so that it closes its recording and event log (the rows worth
+     * replaying are often these); forcibly if it has not stopped within a grace period.
+     */
+    private static void stop(Process p) throws InterruptedException {
+        stop(p, STOP_GRACE_SECONDS);
+    }
+
+    /** Stops {@code p} as Ctrl-C would (SIGTERM), forcibly if it is still going {@code graceSeconds} later. */
+    static void stop(Process p, long graceSeconds) throws InterruptedException {
+        if (!p.isAlive()) {
+            return;
+        }
+        p.destroy();
+        if (!p.waitFor(graceSeconds, TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            p.waitFor();
+        }
+    }
+
+    private static RunReport report(Path dir, int status) {
+        try {
+            return RunReport.read(dir);
+        } catch (IOException e) {
+            return RunReport.failed("the run ended with status " + status + " and no results: " + lastLine(dir), status);
+        }
+    }
+
+    /** The last thing the run's process printed. */
+    private static String lastLine(Path dir) {
+        try {
+            List<String> lines = Files.readAllLines(dir.resolve(OUTPUT), StandardCharsets.UTF_8);
+            for (int i = lines.size() - 1; i >= 0; i--) {
+                if (!lines.get(i).isBlank()) {
+                    return lines.get(i).trim();
+                }
+            }
+            return "it printed nothing";
+        } catch (IOException e) {
+            return "no output (" + e.getMessage() + ")";
+        }
+    }
+}
