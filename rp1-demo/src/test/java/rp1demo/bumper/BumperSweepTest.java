@@ -38,7 +38,7 @@ class BumperSweepTest {
         ByteArrayOutputStream text = new ByteArrayOutputStream();
         PrintStream print = new PrintStream(text, true, StandardCharsets.UTF_8);
         int status = Sweep.run(new String[] {"-p", dir.resolve("bumper.ini").toString(), "--seeds", seeds,
-            "--jobs", jobs, "--out", dir.resolve(out).toString()}, print, print, false);
+            "--jobs", jobs, "--pictures", "--out", dir.resolve(out).toString()}, print, print, false);
         assertEquals(0, status, text.toString(StandardCharsets.UTF_8));
         return Files.readAllLines(dir.resolve(out).resolve("results.csv"));
     }

@@ -391,7 +391,8 @@ public final class Batch {
     /**
      * The user's properties with the run's own keys after them (later keys win): its configuration,
      * a {@code --client}'s keys, its seed and plan, no window, and its log, recording, event log and
-     * picture in its folder.
+     * (with {@code --pictures}) picture in its folder; without, none, since drawing and encoding it
+     * would cost a bumper run three times what the run itself costs (a replay draws one when asked).
      */
     private String properties(Run run) {
         Path d = run.dir().toAbsolutePath();
@@ -410,7 +411,7 @@ public final class Batch {
                 + "logToSystemOut=false\n"
                 + "recordFileName=" + d.resolve(RECORDING) + "\n"
                 + "eventLogFileName=" + d.resolve(EVENTS) + "\n"
-                + "snapshotFileName=" + d.resolve(PICTURE) + "\n"
+                + "snapshotFileName=" + (options.pictures ? d.resolve(PICTURE).toString() : "") + "\n"
                 + "snapshotInterval=0\n";
     }
 }

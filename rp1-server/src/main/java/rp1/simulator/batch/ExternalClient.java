@@ -28,14 +28,17 @@ final class ExternalClient {
     static final String RESULTS = "client-results.txt";
     /** The environment variable with the server's address. */
     static final String HOST_VARIABLE = "RP1_HOST";
-    private static final long GRACE_SECONDS = 2;
+    /** How long the program may take to end when asked, and the run to end once the program has. */
+    static final long GRACE_SECONDS = 2;
 
     private final Process process;
     private final Path results;
+    private final Path output;
 
-    private ExternalClient(Process process, Path results) {
+    private ExternalClient(Process process, Path results, Path output) {
         this.process = process;
         this.results = results;
+        this.output = output;
     }
 
     /** Starts {@code command} (split at white space) for the run in {@code dir} served by {@code server}. */
@@ -52,7 +55,18 @@ final class ExternalClient {
         env.put(RsRunContext.SEED_VARIABLE, Long.toString(server.getSimulation().getSeed()));
         env.put(RsRunContext.RESULTS_VARIABLE, results.toString());
         server.getConfig().parameters.forEach((name, value) -> env.put(RsRunContext.parameterVariable(name), value));
-        return new ExternalClient(b.start(), results);
+        return new ExternalClient(b.start(), results, dir.resolve(OUTPUT));
+    }
+
+    /** Whether the program has ended. */
+    boolean hasExited() {
+        return !process.isAlive();
+    }
+
+    /** How the program ended, with the last line it printed, for a run's reason. */
+    String describeExit() {
+        return "the program ended with status " + process.exitValue() + " before the run did: "
+                + ProcessRuns.lastLine(output);
     }
 
     /**

@@ -102,14 +102,15 @@ final class ProcessRuns implements RunEngine {
         try {
             return RunReport.read(dir);
         } catch (IOException e) {
-            return RunReport.failed("the run ended with status " + status + " and no results: " + lastLine(dir), status);
+            return RunReport.failed("the run ended with status " + status + " and no results: "
+                    + lastLine(dir.resolve(OUTPUT)), status);
         }
     }
 
-    /** The last thing the run's process printed. */
-    private static String lastLine(Path dir) {
+    /** The last line a process printed into {@code file}, or what there is instead. */
+    static String lastLine(Path file) {
         try {
-            List<String> lines = Files.readAllLines(dir.resolve(OUTPUT), StandardCharsets.UTF_8);
+            List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
             for (int i = lines.size() - 1; i >= 0; i--) {
                 if (!lines.get(i).isBlank()) {
                     return lines.get(i).trim();

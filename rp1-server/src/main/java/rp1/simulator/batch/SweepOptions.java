@@ -10,7 +10,8 @@ import java.util.Set;
 
 /**
  * A sweep's command line: {@code -p FILE.ini --seeds 1-16 [--vary KEY=V1,V2 ...] [--plans a.txt,b.txt]
- * [--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] --out DIR [--resume]}. Immutable.
+ * [--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] [--pictures] --out DIR [--resume]}.
+ * Immutable.
  */
 public final class SweepOptions {
     /** The most runs one sweep may have. */
@@ -21,7 +22,8 @@ public final class SweepOptions {
     /** What the command line may hold. */
     public static final String USAGE = String.join("\n",
             "usage: java rp1.Sweep -p PROPERTIES --seeds SEEDS --out DIR [--vary KEY=VALUES ...] [--plans A.txt,B.txt]",
-            "                      [--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] [--resume]",
+            "                      [--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] [--pictures]",
+            "                      [--resume]",
             "  -p PROPERTIES  the server's properties: a file, or Properties/NAME on the class path; they must",
             "                 load the robot (dlcEnabled, dlcName) and bound every run (maxSimulationTime or",
             "                 exitWhenClientsDone)",
@@ -37,6 +39,7 @@ public final class SweepOptions {
             "                 with static state shared between instances, System.exit or threads of their own)",
             "  --client CMD   runs the program CMD (split at spaces) as each run's robot instead of a loaded one:",
             "                 it connects to the port in RP1_PORT and finds RP1_SEED, RP1_PARAM_NAME, RP1_RESULTS",
+            "  --pictures     also leave a picture of each run's end, end.png, in its folder (slower)",
             "  --out DIR      where results.csv, summary.png and runs/SEED-PLAN/ go (created if need be)",
             "  --resume       go on with the sweep in DIR that was interrupted: run only the runs it has no",
             "                 results for (the other options must be those it was started with)",
@@ -64,9 +67,12 @@ public final class SweepOptions {
     public final Isolation isolation;
     /** The program that is each run's robot ({@code --client}), or null for the loaded one. */
     public final String client;
+    /** Each run leaves a picture of its end ({@code --pictures}). */
+    public final boolean pictures;
 
     private SweepOptions(String properties, List<Long> seeds, List<String> plans, int jobs, double timeoutSeconds,
-                         Path out, boolean resume, List<Varied> varied, Isolation isolation, String client) {
+                         Path out, boolean resume, List<Varied> varied, Isolation isolation, String client,
+                         boolean pictures) {
         this.properties = properties;
         this.seeds = Collections.unmodifiableList(seeds);
         this.plans = Collections.unmodifiableList(plans);
@@ -77,6 +83,7 @@ public final class SweepOptions {
         this.varied = List.copyOf(varied);
         this.isolation = isolation;
         this.client = client;
+        this.pictures = pictures;
     }
 
     /** How many configurations the varied keys make: the product of their numbers of values. */
@@ -105,6 +112,7 @@ public final class SweepOptions {
         List<Varied> varied = new ArrayList<>();
         Isolation isolation = Isolation.LOADER;
         String client = null;
+        boolean pictures = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -121,6 +129,7 @@ public final class SweepOptions {
                 case "--vary" -> varied.add(vary(varied, value(args, ++i, a)));
                 case "--isolation" -> isolation = isolation(value(args, ++i, a));
                 case "--client" -> client = client(value(args, ++i, a));
+                case "--pictures" -> pictures = true;
                 default -> throw new IllegalArgumentException((a.startsWith("-") ? "unknown option " : "unexpected argument ") + a);
             }
         }
@@ -128,7 +137,7 @@ public final class SweepOptions {
             throw new IllegalArgumentException("-p, --seeds and --out are required");
         }
         SweepOptions options = new SweepOptions(properties, seeds, plans, jobs, timeout, out, resume, varied, isolation,
-                client);
+                client, pictures);
         if (seeds.size() * (long) Math.max(1, plans.size()) * options.configurations() > MAX_RUNS) {
             throw new IllegalArgumentException("more than " + MAX_RUNS + " runs");
         }

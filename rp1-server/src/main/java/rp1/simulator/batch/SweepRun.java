@@ -41,6 +41,8 @@ public final class SweepRun {
     public static final String LOG = "server.log";
     /** The {@code --client} command, in the run's folder when the sweep has one. */
     static final String CLIENT_COMMAND = "client-command.txt";
+    /** How often a run with a {@code --client} looks whether the client's program is still going. */
+    private static final long POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(50);
     /** How long stopping waits for a server that is starting. */
     private static final long START_WAIT_SECONDS = 30;
 
@@ -105,8 +107,13 @@ public final class SweepRun {
             if (client != null) {
                 external = ExternalClient.start(client, dir, server);
             }
-            OptionalInt status = Double.isInfinite(timeoutSeconds) ? OptionalInt.of(server.awaitExit())
-                    : server.awaitExit((long) (timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
+            long deadline = Double.isInfinite(timeoutSeconds) ? Long.MAX_VALUE
+                    : System.nanoTime() + (long) (timeoutSeconds * 1e9);
+            OptionalInt status = awaitExit(server, external, deadline);
+            if (status.isEmpty() && external != null && external.hasExited()) {
+                server.stop();
+                return report(RunReport.failed("client failed: " + external.describeExit(), ExitStatus.CLIENT_FAILED));
+            }
             if (status.isEmpty()) {
                 server.stop();
                 return report(RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of"
@@ -122,6 +129,30 @@ public final class SweepRun {
                 external.stop();
             }
         }
+    }
+
+    /**
+     * Waits until the server stops by itself; empty if the deadline passes first, or if the run's
+     * client program has ended and the server has not stopped {@link ExternalClient#GRACE_SECONDS}
+     * later (it left without a robot on the floor, which a run waiting for it would wait for forever).
+     */
+    private static OptionalInt awaitExit(RunningServer server, ExternalClient external, long deadline)
+            throws InterruptedException {
+        long clientGone = Long.MAX_VALUE;
+        while (System.nanoTime() < deadline) {
+            long wait = Math.min(deadline - System.nanoTime(), external == null ? Long.MAX_VALUE : POLL_NANOS);
+            OptionalInt status = server.awaitExit(wait, TimeUnit.NANOSECONDS);
+            if (status.isPresent()) {
+                return status;
+            }
+            if (external != null && external.hasExited()) {
+                clientGone = Math.min(clientGone, System.nanoTime());
+                if (System.nanoTime() - clientGone > TimeUnit.SECONDS.toNanos(ExternalClient.GRACE_SECONDS)) {
+                    return OptionalInt.empty();
+                }
+            }
+        }
+        return OptionalInt.empty();
     }
 
     /** The {@code --client} command the run's folder holds, or null. */

@@ -5,6 +5,7 @@ import java.io.IOException;
 import rp1.rossum.RsBody;
 import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
+import rp1.rossum.RsProperties;
 import rp1.rossum.event.RsMotionHaltedEvent;
 import rp1.rossum.request.RsMotionRequest;
 
@@ -16,6 +17,16 @@ import rp1.rossum.request.RsMotionRequest;
 public class ExperimentDlc extends RsClient {
     /** Counts the instances of this class: 1 in every run when each run has its own classes. */
     private static int made;
+
+    /** The same robot as a program of its own, connecting where a sweep's {@code --client} says (RP1_HOST, RP1_PORT). */
+    public static void main(String[] args) throws IOException {
+        RsProperties p = new RsProperties();
+        p.hostName = System.getenv("RP1_HOST");
+        p.port = Integer.parseInt(System.getenv("RP1_PORT"));
+        ExperimentDlc robot = new ExperimentDlc();
+        robot.initialize(p);
+        robot.run();
+    }
 
     @Override
     public void initialize() throws IOException {

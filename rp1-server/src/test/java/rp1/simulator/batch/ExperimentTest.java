@@ -153,4 +153,29 @@ class ExperimentTest {
                 + " --vary maxSimulationTime=soon)"), err.toString());
         assertTrue(Files.notExists(dir.resolve("out")));
     }
+
+    @Test
+    void aClientProgramIsEachRunsRobotWithTheRunInItsEnvironment() throws Exception {
+        Path p = properties();
+        String java = Path.of(System.getProperty("java.home"), "bin", "java") + " -cp "
+                + System.getProperty("java.class.path") + " " + ExperimentDlc.class.getName();
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "8", "--vary", "param.speed=0.15", "--client", java,
+                "--out", dir.resolve("out").toString()), err.toString());
+        List<String> header = table("out", "results.csv").get(0);
+        List<String> row = table("out", "results.csv").get(1);
+        assertEquals("0.15", row.get(header.indexOf("result.speed")));
+        assertEquals("8", row.get(header.indexOf("result.seed")));
+        assertEquals("0.3", row.get(header.indexOf("distance")));
+        assertEquals("nobody-left", row.get(header.indexOf("reason")));
+    }
+
+    @Test
+    void aClientProgramThatEndsWithoutARobotFailsItsRunInsteadOfHangingIt() throws Exception {
+        Path p = properties();
+        assertEquals(Sweep.RUN_FAILED, sweep("-p", p.toString(), "--seeds", "1", "--client", "false", "--out",
+                dir.resolve("out").toString()), err.toString());
+        List<String> row = table("out", "results.csv").get(1);
+        assertEquals(List.of("2", "client failed: the program ended with status 1 before the run did: it printed nothing"),
+                row.subList(row.size() - 3, row.size() - 1));
+    }
 }
