@@ -352,18 +352,20 @@ public final class Batch {
      */
     private Outcome execute(Run run) throws InterruptedException {
         long start = System.nanoTime();
-        RunReport report;
+        RunEngine.Ran ran;
         try {
             prepareFolder(run);
-            report = engine.run(run);
+            ran = engine.run(run);
         } catch (IOException e) {
-            report = RunReport.failed("the run could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED);
+            ran = new RunEngine.Ran(RunReport.failed("the run could not be started: " + e.getMessage(),
+                    ExitStatus.STARTUP_FAILED), List.of());
         }
+        RunReport report = ran.report();
         if (stopping && (report.endReason().equals("stopped") || Double.isNaN(report.endTime()))) {
             return null;
         }
         double wall = (System.nanoTime() - start) * 1e-9;
-        return new Outcome(run, report, wall, trails(run));
+        return new Outcome(run, report, wall, ran.trails());
     }
 
     /** The run's folder with its properties (and --client command), and nothing an earlier run left. */
@@ -380,7 +382,8 @@ public final class Batch {
         }
     }
 
-    private static List<Trail> trails(Run run) {
+    /** The trails a run left in its folder; none if it left none that can be read. */
+    static List<Trail> trails(Run run) {
         try {
             return TrailFile.read(run.dir());
         } catch (IOException e) {

@@ -31,20 +31,22 @@ final class LoaderRuns implements RunEngine {
     }
 
     @Override
-    public RunReport run(Batch.Run run) throws IOException, InterruptedException {
+    public Ran run(Batch.Run run) throws IOException, InterruptedException {
         Thread thread = Thread.currentThread();
         ClassLoader before = thread.getContextClassLoader();
         AtomicReference<RunningServer> mine = new AtomicReference<>();
         try (RunClassLoader loader = RunClassLoader.of(robotClasses, parent)) {
             // The robot's threads, and any library it uses that asks the context, see its own classes.
             thread.setContextClassLoader(loader);
-            return new SweepRun(run.dir(), loader).run(server -> {
+            SweepRun here = new SweepRun(run.dir(), loader);
+            RunReport report = here.run(server -> {
                 mine.set(server);
                 running.add(server);
                 if (stopping) {
                     server.requestStop(ExitStatus.OK);
                 }
             }, timeoutSeconds);
+            return new Ran(report, here.trails());
         } finally {
             thread.setContextClassLoader(before);
             if (mine.get() != null) {

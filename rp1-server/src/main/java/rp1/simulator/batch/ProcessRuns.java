@@ -33,7 +33,7 @@ final class ProcessRuns implements RunEngine {
     }
 
     @Override
-    public RunReport run(Batch.Run run) throws IOException, InterruptedException {
+    public Ran run(Batch.Run run) throws IOException, InterruptedException {
         Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(),
                 run.dir().toAbsolutePath().toString())).redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
@@ -52,10 +52,10 @@ final class ProcessRuns implements RunEngine {
         }
         if (!ended) {
             stop(p);
-            return RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
-                    timeoutSeconds), RunReport.TIMED_OUT);
+            return new Ran(RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
+                    timeoutSeconds), RunReport.TIMED_OUT), Batch.trails(run));
         }
-        return report(run.dir(), p.exitValue());
+        return new Ran(report(run.dir(), p.exitValue()), Batch.trails(run));
     }
 
     /**

@@ -202,6 +202,11 @@ public final class SweepRun {
         };
     }
 
+    /** The robots' trails, once {@link #run} has returned (none if the server never started). */
+    List<Trail> trails() {
+        return statistics == null ? List.of() : statistics.trails();
+    }
+
     private RunReport report(RunReport report) {
         try {
             report.write(dir);
