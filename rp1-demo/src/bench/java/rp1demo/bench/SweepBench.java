@@ -21,6 +21,8 @@ import rp1.simulator.launch.JavaCommand;
  */
 public final class SweepBench {
     private static final int TRIES = 3;
+    /** The options ./rp1 sweep starts its JVM with. */
+    private static final List<String> QUICK = List.of("-XX:TieredStopAtLevel=1");
 
     private SweepBench() {
     }
@@ -31,19 +33,23 @@ public final class SweepBench {
         System.out.printf(Locale.ROOT, "RP1 sweep benchmark, %s, %d processors, Java %s, load average %.1f%n",
                 LocalDate.now(), Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
                 java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
-        double one = median("rp1.Server", "-p", properties.toString());
-        double loader = median("rp1.Sweep", "-p", properties.toString(), "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
-        double process = median("rp1.Sweep", "-p", properties.toString(), "--seeds", "1-8", "--jobs", "2",
-                "--isolation", "process", "--out", "OUT");
-        System.out.printf(Locale.ROOT, "one bumper run of 60 simulated s as a process of its own: %.2f s%n", one);
-        System.out.printf(Locale.ROOT, "64 such runs, rp1.Sweep --jobs 2 (--isolation loader): %.2f s, %.1f times the"
-                + " one run (target: at most 2)%n", loader, loader / one);
-        System.out.printf(Locale.ROOT, "8 such runs, rp1.Sweep --jobs 2 --isolation process: %.2f s (%.2f s a run)%n",
-                process, process / 8);
+        String p = properties.toString();
+        double one = median(List.of(), "rp1.Server", "-p", p);
+        double loader = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
+        double fullJit = median(List.of(), "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
+        double process = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-8", "--jobs", "2", "--isolation", "process",
+                "--out", "OUT");
+        System.out.printf(Locale.ROOT, "one bumper run of 60 simulated s as a process of its own (java rp1.Server):"
+                + " %.2f s%n", one);
+        System.out.printf(Locale.ROOT, "64 such runs, ./rp1 sweep --jobs 2 (--isolation loader, %s): %.2f s, %.1f times"
+                + " the one run (target: at most 2)%n", String.join(" ", QUICK), loader, loader / one);
+        System.out.printf(Locale.ROOT, "the same with both compilers (java rp1.Sweep without options): %.2f s, %.1f times%n",
+                fullJit, fullJit / one);
+        System.out.printf(Locale.ROOT, "8 such runs, --isolation process: %.2f s (%.2f s a run)%n", process, process / 8);
     }
 
-    /** The median wall seconds of {@link #TRIES} runs of {@code java MAIN ARGS}, each in a fresh folder (OUT in it). */
-    private static double median(String main, String... args) throws IOException, InterruptedException {
+    /** The median wall seconds of {@link #TRIES} runs of {@code java JVM MAIN ARGS}, each in a fresh folder (OUT in it). */
+    private static double median(List<String> jvm, String main, String... args) throws IOException, InterruptedException {
         double[] times = new double[TRIES];
         for (int i = 0; i < TRIES; i++) {
             Path dir = Files.createTempDirectory("rp1-sweep-bench");
@@ -52,7 +58,7 @@ public final class SweepBench {
                 words.add(a.equals("OUT") ? dir.resolve("out").toString() : a);
             }
             long start = System.nanoTime();
-            Process p = new ProcessBuilder(JavaCommand.of(List.of(), main, words.toArray(new String[0])))
+            Process p = new ProcessBuilder(JavaCommand.of(jvm, main, words.toArray(new String[0])))
                     .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve("output.txt").toFile())
                     .start();
             int status = p.waitFor();

@@ -24,6 +24,12 @@ final class ProcessRuns implements RunEngine {
     /** How long a run that is asked to stop may take to close its files before it is killed. */
     static final long STOP_GRACE_SECONDS = 10;
 
+    /**
+     * A run computes for milliseconds: the optimizing compiler's work would never pay back, and
+     * costs more than the run (docs/performance.md).
+     */
+    static final List<String> QUICK_COMPILER = List.of("-XX:TieredStopAtLevel=1");
+
     private final double timeoutSeconds;
     private final Set<Process> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
@@ -34,7 +40,7 @@ final class ProcessRuns implements RunEngine {
 
     @Override
     public Ran run(Batch.Run run) throws IOException, InterruptedException {
-        Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(),
+        Process p = new ProcessBuilder(JavaCommand.of(QUICK_COMPILER, SweepRun.class.getName(),
                 run.dir().toAbsolutePath().toString())).redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
         running.add(p);
