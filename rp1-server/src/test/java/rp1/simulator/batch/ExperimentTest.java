@@ -3,10 +3,7 @@ package rp1.simulator.batch;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -29,12 +26,10 @@ import rp1.Sweep;
 class ExperimentTest {
     @TempDir
     Path dir;
-    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
-    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+    private final InProcessSweep sweeps = new InProcessSweep();
 
     private int sweep(String... args) {
-        return Sweep.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8), false);
+        return sweeps.run(args);
     }
 
     private Path properties(String... extra) throws IOException {
@@ -72,7 +67,7 @@ class ExperimentTest {
         Path p = properties();
         int status = sweep("-p", p.toString(), "--seeds", "3-4", "--vary", "param.speed=0.1,0.25", "--vary",
                 "maxSimulationTime=20:30:10", "--jobs", "2", "--out", dir.resolve("out").toString());
-        assertEquals(0, status, out.toString(StandardCharsets.UTF_8) + err);
+        assertEquals(0, status, sweeps.out() + sweeps.err());
         List<List<String>> t = table("out", "results.csv");
         assertEquals(List.of("param.speed", "maxSimulationTime", "seed", "plan", "run", "robot", "start_x", "start_y",
                 "start_heading", "end_x", "end_y", "end_heading", "end_time", "distance", "collisions",
@@ -112,22 +107,22 @@ class ExperimentTest {
     void aRunGivesTheSameRowAloneInABatchFirstOrLastAndInAProcessOfItsOwn() throws Exception {
         Path p = properties("param.place=$random");
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "1-4", "--vary", "param.speed=0.1,0.3", "--jobs", "2",
-                "--out", dir.resolve("batch").toString()), err.toString());
+                "--out", dir.resolve("batch").toString()), sweeps.err());
         Map<String, List<String>> batch = byRun(table("batch", "results.csv"));
         assertEquals(8, batch.size());
         assertEquals(2, batch.values().stream().map(r -> r.get(6)).distinct().limit(2).count(),
                 "the seed decides where the robot starts");
 
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "4,2,3,1", "--vary", "param.speed=0.3,0.1", "--jobs", "1",
-                "--out", dir.resolve("shuffled").toString()), err.toString());
+                "--out", dir.resolve("shuffled").toString()), sweeps.err());
         assertEquals(batch, byRun(table("shuffled", "results.csv")), "the same rows in another order of runs");
 
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "3", "--vary", "param.speed=0.1", "--out",
-                dir.resolve("alone").toString()), err.toString());
+                dir.resolve("alone").toString()), sweeps.err());
         assertEquals(Map.of("0.1/3", batch.get("0.1/3")), byRun(table("alone", "results.csv")));
 
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "2,3", "--vary", "param.speed=0.3", "--isolation",
-                "process", "--jobs", "2", "--out", dir.resolve("process").toString()), err.toString());
+                "process", "--jobs", "2", "--out", dir.resolve("process").toString()), sweeps.err());
         assertEquals(Map.of("0.3/2", batch.get("0.3/2"), "0.3/3", batch.get("0.3/3")),
                 byRun(table("process", "results.csv")), "a process of its own gives the same rows");
     }
@@ -136,12 +131,12 @@ class ExperimentTest {
     void resumeRefusesAnotherGrid() throws Exception {
         Path p = properties();
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.speed=0.1", "--out",
-                dir.resolve("out").toString()), err.toString());
-        err.reset();
+                dir.resolve("out").toString()), sweeps.err());
+        sweeps.reset();
         assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.speed=0.1,0.2", "--out",
                 dir.resolve("out").toString(), "--resume"));
-        assertTrue(err.toString(StandardCharsets.UTF_8).contains("the varied keys (--vary): param.speed=0.1 there,"
-                + " param.speed=0.1,0.2 here"), err.toString());
+        assertTrue(sweeps.err().contains("the varied keys (--vary): param.speed=0.1 there,"
+                + " param.speed=0.1,0.2 here"), sweeps.err());
     }
 
     @Test
@@ -149,8 +144,8 @@ class ExperimentTest {
         Path p = properties();
         assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--vary", "maxSimulationTime=10,soon", "--out",
                 dir.resolve("out").toString()));
-        assertTrue(err.toString(StandardCharsets.UTF_8).contains("maxSimulationTime=soon: a number expected (with"
-                + " --vary maxSimulationTime=soon)"), err.toString());
+        assertTrue(sweeps.err().contains("maxSimulationTime=soon: a number expected (with"
+                + " --vary maxSimulationTime=soon)"), sweeps.err());
         assertTrue(Files.notExists(dir.resolve("out")));
     }
 
@@ -160,7 +155,7 @@ class ExperimentTest {
         String java = Path.of(System.getProperty("java.home"), "bin", "java") + " -cp "
                 + System.getProperty("java.class.path") + " " + ExperimentDlc.class.getName();
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "8", "--vary", "param.speed=0.15", "--client", java,
-                "--out", dir.resolve("out").toString()), err.toString());
+                "--out", dir.resolve("out").toString()), sweeps.err());
         List<String> header = table("out", "results.csv").get(0);
         List<String> row = table("out", "results.csv").get(1);
         assertEquals("0.15", row.get(header.indexOf("result.speed")));
@@ -173,7 +168,7 @@ class ExperimentTest {
     void aClientProgramThatEndsWithoutARobotFailsItsRunInsteadOfHangingIt() throws Exception {
         Path p = properties();
         assertEquals(Sweep.RUN_FAILED, sweep("-p", p.toString(), "--seeds", "1", "--client", "false", "--out",
-                dir.resolve("out").toString()), err.toString());
+                dir.resolve("out").toString()), sweeps.err());
         List<String> row = table("out", "results.csv").get(1);
         assertEquals(List.of("2", "client failed: the program ended with status 1 before the run did: it printed nothing"),
                 row.subList(row.size() - 3, row.size() - 1));
