@@ -173,4 +173,17 @@ class ExperimentTest {
         assertEquals(List.of("2", "client failed: the program ended with status 1 before the run did: it printed nothing"),
                 row.subList(row.size() - 3, row.size() - 1));
     }
+
+    @Test
+    void theEndPoseAndDistanceAreThoseAtTheEndTimeNotAtTheLastModellingFrame() throws Exception {
+        // The robot drives at 0.1 m/s from x = 1 for two seconds; the run ends at 1.03 s, between frames.
+        Path p = properties("maxSimulationTime=1.03", "param.speed=0.1");
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--out", dir.resolve("out").toString()), sweeps.err());
+        List<String> header = table("out", "results.csv").get(0);
+        List<String> row = table("out", "results.csv").get(1);
+        assertEquals("1.03", row.get(header.indexOf("end_time")));
+        assertEquals("1.103", row.get(header.indexOf("end_x")));
+        assertEquals("0.103", row.get(header.indexOf("distance")));
+        assertEquals("max-simulation-time", row.get(header.indexOf("reason")));
+    }
 }
