@@ -26,6 +26,8 @@ import rp1.simulator.world.WorldListener;
 public final class RunStatistics implements WorldListener, Simulation.EventListener {
     /** Trail points closer than this to the previous one are left out, metres. */
     private static final double TRAIL_RESOLUTION = 0.01;
+    /** Trail points within this of the line through their neighbours are left out, metres. */
+    private static final double TRAIL_TOLERANCE = 0.002;
 
     private final Map<Integer, Watched> robots = new LinkedHashMap<>();
     private final Map<Integer, Long> eventsByClient = new HashMap<>();
@@ -112,7 +114,7 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         for (Watched w : robots.values()) {
             List<double[]> pieces = new ArrayList<>();
             for (List<Double> p : w.pieces) {
-                pieces.add(Trail.piece(p));
+                pieces.add(Trail.simplified(Trail.piece(p), TRAIL_TOLERANCE));
             }
             out.add(new Trail(names.get(i++), pieces));
         }
