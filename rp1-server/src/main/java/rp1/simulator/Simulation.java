@@ -67,6 +67,7 @@ public final class Simulation {
     private boolean robotsPlacedSoFar;
     private volatile Runnable whenDeserted = () -> { };
     private volatile ClientBudgets clientBudgets = ClientBudgets.DEFAULTS;
+    private final ReportedResults reportedResults = new ReportedResults();
 
     public Simulation(RsPlan plan, SimulationSettings settings, RsLogInterface log) {
         this.settings = settings;
@@ -107,6 +108,16 @@ public final class Simulation {
     /** The inputs waiting for the next boundary (a recording listens to them). */
     public InputQueue getInputs() {
         return inputs;
+    }
+
+    /** The seed of the model's random source. */
+    public long getSeed() {
+        return settings.randomSeed;
+    }
+
+    /** The results the clients reported of their own (a sweep's {@code result.NAME} columns). */
+    public ReportedResults getReportedResults() {
+        return reportedResults;
     }
 
     public RsLogInterface getLog() {

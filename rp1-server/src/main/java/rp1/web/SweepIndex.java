@@ -19,7 +19,7 @@ import rp1.simulator.record.RecordingException;
  * A sweep's {@code index.html} (docs/guide.md, "Running many"): the summary per configuration (the
  * sweep's {@code summary.csv} if it wrote one, else the runs and failures per plan), a table of every
  * run as {@code results.csv} has it, sortable by any column, and from each run a link to its replay
- * page ({@code runs/SEED-PLAN/replay.html}, written here when asked for, else the command that writes
+ * page ({@code replay.html} in the run's folder, written here when asked for, else the command that writes
  * it). It reads only the sweep's files, so it follows whatever columns they have.
  */
 public final class SweepIndex {
@@ -44,7 +44,7 @@ public final class SweepIndex {
         List<String> failures = new ArrayList<>();
         Json runs = new Json().beginArray();
         for (List<String> row : results.rows()) {
-            String folder = runFolder(out, results.value(row, "seed"), results.value(row, "plan"));
+            String folder = runFolder(out, results.value(row, "run"), results.value(row, "seed"), results.value(row, "plan"));
             if (pages && folder != null) {
                 writePage(out.resolve(folder), failures);
             }
@@ -66,10 +66,13 @@ public final class SweepIndex {
         return failures;
     }
 
-    /** The run's folder under {@code runs/} (SEED-PLAN, the plan without its extension), or null if there is none. */
-    private static String runFolder(Path out, String seed, String plan) {
+    /**
+     * The run's folder: the results' {@code run} column, or else (a sweep of an older version) under
+     * {@code runs/} as SEED-PLAN, the plan without its extension; null if there is none.
+     */
+    private static String runFolder(Path out, String run, String seed, String plan) {
         String name = plan.replaceAll("\\.[^./\\\\]*$", "").replaceAll(".*[/\\\\]", "");
-        String folder = "runs/" + seed + "-" + name;
+        String folder = run.isEmpty() ? "runs/" + seed + "-" + name : run;
         return Files.isDirectory(out.resolve(folder)) ? folder : null;
     }
 
@@ -95,7 +98,7 @@ public final class SweepIndex {
             int[] c = counts.computeIfAbsent(plan, p -> new int[2]);
             if (seen.computeIfAbsent(plan, p -> new HashSet<>()).add(run)) {
                 c[0]++;
-                if (!results.value(row, "exit_status").equals("0")) {
+                if (!results.value(row, results.header().contains("status") ? "status" : "exit_status").equals("0")) {
                     c[1]++;
                 }
             }
