@@ -10,6 +10,7 @@ import java.util.OptionalLong;
 import java.util.Properties;
 import java.util.Set;
 import java.util.SortedMap;
+import java.util.TreeMap;
 
 import rp1.simulator.noise.NoiseSettings;
 import rp1.simulator.session.ClientBudgets;
@@ -21,8 +22,8 @@ import rp1.simulator.session.ClientBudgets;
  * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
  * {@code clientQueueLimit}, {@code clientOutputBudget}, {@code clientTimeoutBudget},
  * {@code clientSubscriptionBudget}, {@code clientMessageBudget}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
- * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName}, {@code eventLogFileName} and
- * the {@code noise...} keys (docs/properties.md). Immutable; built
+ * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName}, {@code eventLogFileName},
+ * {@code viewPort} and the {@code noise...} keys (docs/properties.md). Immutable; built
  * by {@link #from}, which validates every value and refuses a key it does not know.
  */
 public final class ServerConfig {
@@ -42,6 +43,7 @@ public final class ServerConfig {
             "clientQueueLimit", "snapshotFileName", "snapshotInterval", "robotsInteract", "waitForClients",
             "dlcDelivery", "recordFileName", "eventLogFileName",
             "clientOutputBudget", "clientTimeoutBudget", "clientSubscriptionBudget", "clientMessageBudget",
+            "viewPort",
             "noiseRangeSigma", "noiseRangeDropout", "noiseTargetRangeSigma", "noiseTargetBearingSigma",
             "noiseEncoderMiss", "noiseSlipDistanceSigma", "noiseSlipTurnSigma");
 
@@ -53,11 +55,14 @@ public final class ServerConfig {
     static final Map<String, String> UNUSED_0_60_KEYS = Map.of(
             "hostName", "a client key (rossum.ini); the server listens on bindAddress and port");
 
+    /** The prefix of the robot's parameters among the keys. */
+    public static final String PARAMETER_PREFIX = "param.";
+
     /**
-     * Prefixes under which any key is accepted, for families of keys read elsewhere than here (robot
-     * parameters such as {@code param.NAME} would be declared by adding {@code "param."}). None yet.
+     * Prefixes under which any key is accepted: the robot's parameters ({@code param.NAME}), which
+     * belong to the robot, not to the server.
      */
-    static final List<String> KEY_FAMILIES = List.of();
+    static final List<String> KEY_FAMILIES = List.of(PARAMETER_PREFIX);
 
     private static final PropertyKeys DECLARED = new PropertyKeys(KEYS, UNUSED_0_60_KEYS, KEY_FAMILIES);
 
@@ -134,6 +139,13 @@ public final class ServerConfig {
     public final String recordFileName;
     /** Where to write every event sent to a client, one line each (docs/recording.md), or null. */
     public final String eventLogFileName;
+    /** The port a browser watches the run on ({@code viewPort}, docs/properties.md); 0: no live view. */
+    public final int viewPort;
+    /**
+     * The robot's parameters: every {@code param.NAME} key, by NAME, with its value's first word.
+     * Loaded clients read them with {@code RsClient.getRunParameter}; a sweep varies them.
+     */
+    public final SortedMap<String, String> parameters;
     /** How noisy sensors and motion are (the {@code noise...} keys); {@link NoiseSettings#OFF} by default. */
     public final NoiseSettings noise;
     /** The properties as given (values unparsed), sorted by key: a recording keeps them. */
@@ -183,8 +195,10 @@ public final class ServerConfig {
         dlcDelivery = Delivery.valueOf(r.choice("dlcDelivery", "auto", "auto", "direct", "pipes").toUpperCase(Locale.ROOT));
         recordFileName = r.string("recordFileName");
         eventLogFileName = r.string("eventLogFileName");
+        viewPort = r.integer("viewPort", 0, 0, 65535);
         noise = readNoise(r);
         given = r.given();
+        parameters = parameters(r);
         checkConsistency(r);
     }
 
@@ -246,6 +260,30 @@ public final class ServerConfig {
      */
     public static ServerConfig fromRecorded(Properties table, String source) throws ConfigException {
         return new ServerConfig(new PropertyReader(table, source, DECLARED), null, false);
+    }
+
+    /**
+     * The {@code param.NAME} keys: accepted whatever NAME is, since they belong to the robot, not to
+     * the server (docs/properties.md).
+     */
+    private static SortedMap<String, String> parameters(PropertyReader r) throws ConfigException {
+        SortedMap<String, String> parameters = new TreeMap<>();
+        for (String key : r.given().keySet()) {
+            if (key.startsWith(PARAMETER_PREFIX)) {
+                String name = key.substring(PARAMETER_PREFIX.length());
+                if (name.isEmpty()) {
+                    throw r.error(key, r.given().get(key), "a parameter needs a name after " + PARAMETER_PREFIX);
+                }
+                String value = r.string(key);
+                parameters.put(name, value == null ? "" : value);
+            }
+        }
+        return Collections.unmodifiableSortedMap(parameters);
+    }
+
+    /** Whether {@code key} is a parameter of the robot ({@code param.NAME}), which any properties may hold. */
+    public static boolean isParameter(String key) {
+        return key.startsWith(PARAMETER_PREFIX) && key.length() > PARAMETER_PREFIX.length();
     }
 
     private static String orDefault(String v, String fallback) {
