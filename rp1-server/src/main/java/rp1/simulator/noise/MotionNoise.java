@@ -40,8 +40,15 @@ final class MotionNoise {
         commanded = null;
     }
 
-    /** The motion the robot makes when {@code request} starts at {@code time}: the request slipped. */
-    RsMotionRequest actuate(double time, RsMotionRequest request) {
+    /** The motion the robot really makes for {@code request}: its distance and turn slipped. */
+    RsMotionRequest slip(RsMotionRequest request) {
+        double d = 1.0 + distance.gaussian(settings.slipDistanceSigma);
+        double t = 1.0 + turn.gaussian(settings.slipTurnSigma);
+        return new RsMotionRequest(request.linearVelocity * d, request.rotationalVelocity * t, request.duration);
+    }
+
+    /** The commanded motion {@code request} starts at {@code time}: the belief follows it from where it is. */
+    void begin(double time, RsMotionRequest request) {
         double[] at = believedAt(time);
         x = at[0];
         y = at[1];
@@ -49,9 +56,6 @@ final class MotionNoise {
         startTime = time;
         commanded = request;
         ran = request.duration;
-        double d = 1.0 + distance.gaussian(settings.slipDistanceSigma);
-        double t = 1.0 + turn.gaussian(settings.slipTurnSigma);
-        return new RsMotionRequest(request.linearVelocity * d, request.rotationalVelocity * t, request.duration);
     }
 
     /** The started event with the believed start pose. */

@@ -56,9 +56,16 @@ public final class RobotNoise {
         }
     }
 
-    /** The motion the robot really makes when {@code commanded} starts at {@code time}. */
-    public RsMotionRequest actuate(double time, RsMotionRequest commanded) {
-        return motion == null ? commanded : motion.actuate(time, commanded);
+    /** The motion the robot really makes for {@code commanded} (a new draw each call). */
+    public RsMotionRequest slip(RsMotionRequest commanded) {
+        return motion == null ? commanded : motion.slip(commanded);
+    }
+
+    /** The robot starts the motion it was commanded, {@code commanded}, at {@code time}. */
+    public void begin(double time, RsMotionRequest commanded) {
+        if (motion != null) {
+            motion.begin(time, commanded);
+        }
     }
 
     /** The motion-started event the client gets for the true one. */

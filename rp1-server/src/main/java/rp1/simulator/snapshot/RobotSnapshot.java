@@ -60,8 +60,9 @@ public record RobotSnapshot(int number, String label, boolean placed, double x, 
             }
         }
         RsTransform pose = robot.pose();
+        RsTransform belief = robot.believedPose();
         return new RobotSnapshot(robot.getNumber(), robot.getLabel(), robot.isPlaced(), pose.m13, pose.m23,
-                pose.getTheta(), parts);
+                pose.getTheta(), parts, belief == null ? null : new double[] {belief.m13, belief.m23, belief.getTheta()});
     }
 
     /** The pose as a body-to-world transform. */

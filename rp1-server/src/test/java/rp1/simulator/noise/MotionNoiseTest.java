@@ -21,7 +21,7 @@ class MotionNoiseTest {
         double distanceSquares = 0;
         double turnSquares = 0;
         for (int i = 0; i < N; i++) {
-            RsMotionRequest made = m.actuate(i, new RsMotionRequest(0.4, 0.5, 1.0));
+            RsMotionRequest made = m.slip(new RsMotionRequest(0.4, 0.5, 1.0));
             assertEquals(1.0, made.duration);
             distanceSquares += Math.pow(made.linearVelocity / 0.4 - 1.0, 2);
             turnSquares += Math.pow(made.rotationalVelocity / 0.5 - 1.0, 2);
@@ -34,7 +34,7 @@ class MotionNoiseTest {
     void motionEventsReportTheCommandedMotionFromWhereTheRobotWasPlaced() {
         MotionNoise m = slip(0.3, 0.3);
         m.placed(0.0, 1.0, 2.0, 0.0);
-        m.actuate(0.0, new RsMotionRequest(0.5, 0.0, 4.0));
+        m.begin(0.0, new RsMotionRequest(0.5, 0.0, 4.0));
         RsMotionStartedEvent s = m.started(new RsMotionStartedEvent(0.0, 0.5, 0.0, 4.0, 9, 9, 9));
         assertEquals(1.0, s.x, 1e-12);
         assertEquals(2.0, s.y, 1e-12);
@@ -50,11 +50,11 @@ class MotionNoiseTest {
     void aMotionStoppedEarlyIsBelievedToHaveRunOnlyUntilThen() {
         MotionNoise m = slip(0.3, 0.3);
         m.placed(0.0, 0.0, 0.0, 0.0);
-        m.actuate(0.0, new RsMotionRequest(1.0, 0.0, 10.0));
+        m.begin(0.0, new RsMotionRequest(1.0, 0.0, 10.0));
         RsMotionHaltedEvent h = m.halted(new RsMotionHaltedEvent(2.0, RsMotionHaltedEvent.HALTED_ON_COLLISION,
                 9, 9, 9, 2.0));
         assertEquals(2.0, h.x, 1e-12);
-        m.actuate(5.0, new RsMotionRequest(0.0, Math.PI / 2, 1.0));
+        m.begin(5.0, new RsMotionRequest(0.0, Math.PI / 2, 1.0));
         RsMotionStartedEvent s = m.started(new RsMotionStartedEvent(5.0, 0.0, Math.PI / 2, 1.0, 9, 9, 9));
         assertEquals(2.0, s.x, 1e-12);
         assertEquals(2.0, m.believedPose(6.0).m13, 1e-12);
