@@ -171,7 +171,13 @@ class InstalledCommandTest {
         assertEquals(0, r.status(), r.output());
         List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
         assertEquals(3, rows.size(), rows.toString());
+        List<String> header = List.of(rows.get(0).split(","));
         String[] row = rows.get(1).split(",");
-        assertEquals("0", row[5], "exit status of " + rows.get(1));
+        assertEquals("0", row[header.indexOf("status")], "exit status of " + rows.get(1));
+
+        // A JVM per run gets the robot's classes too.
+        Result apart = rp1("sweep", "-p", "still.ini", "--seeds", "1", "--isolation", "process", "--out", "apart",
+                "-cp", "classes");
+        assertEquals(0, apart.status(), apart.output());
     }
 }
