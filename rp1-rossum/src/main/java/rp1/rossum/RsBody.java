@@ -35,6 +35,11 @@ public class RsBody extends RsComponent {
     public boolean collision;
 
     private final ArrayList<RsBodyPart> parts = new ArrayList<>();
+    /**
+     * The sensors in part order, kept because the simulator reads them at every motion step of every
+     * robot; rebuilt when a part is added. Never handed out: callers get a copy.
+     */
+    private transient RsBodySensor[] sensors;
     private int bodyID;
 
     /** An empty body; null is kept as the name and transmitted as "". */
@@ -53,6 +58,7 @@ public class RsBody extends RsComponent {
             throw new IllegalArgumentException("part is null");
         }
         parts.add(part);
+        sensors = null;
         part.joined(this);
         if (part instanceof RsWheelSystem) {
             wheelSystem = (RsWheelSystem) part;
@@ -72,7 +78,16 @@ public class RsBody extends RsComponent {
 
     /** The sensors, in part order. */
     public RsBodySensor[] getBodySensorArray() {
-        return partsOf(RsBodySensor.class).toArray(new RsBodySensor[0]);
+        return sensors().clone();
+    }
+
+    private RsBodySensor[] sensors() {
+        RsBodySensor[] s = sensors;
+        if (s == null) {
+            s = partsOf(RsBodySensor.class).toArray(new RsBodySensor[0]);
+            sensors = s;
+        }
+        return s;
     }
 
     /**
@@ -220,7 +235,7 @@ public class RsBody extends RsComponent {
      */
     public boolean processSensors(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
         boolean changed = false;
-        for (RsBodySensor s : getBodySensorArray()) {
+        for (RsBodySensor s : sensors()) {
             if (s.computeAndSetState(simTime, plan, walls, pose)) {
                 changed = true;
             }
