@@ -18,7 +18,7 @@ import rp1.simulator.launch.RunningServer;
  * ScaleWanderer}s in a square arena (40 m, or larger for larger crowds) with diamond pillars on a 5 m
  * grid, loaded in-process, headless, interlock on, {@code simulationSpeed=max}. Run as a process of its
  * own ({@code ScaleArena N SECONDS [ARENA]}) so that its memory figures are its own. The clock is
- * counted from the moment all are placed; after a warm-up of a fifth of the measured time, simulated
+ * counted from the moment all are placed; after a warm-up as long as the measurement (at least 3 s), simulated
  * seconds per wall second (and per CPU second of the process, which a shared machine disturbs less)
  * and events per second are measured over SECONDS of wall time.
  */
@@ -28,6 +28,11 @@ public final class ScaleArena {
     private static final double GRID = 5.0;
     private static final double MARGIN = 0.05;
     private static final long PLACEMENT_TIMEOUT_MILLIS = 900_000;
+    /**
+     * At least this long, or as long as the measurement, the run warms up first: on a busy machine the
+     * compiler takes seconds to reach the hot path, and a window over its start reads ten times slower.
+     */
+    private static final double WARM_UP_SECONDS = 3.0;
 
     private ScaleArena() {
     }
@@ -53,7 +58,7 @@ public final class ScaleArena {
                 Thread.sleep(5);
             }
             double placing = (System.nanoTime() - startup) * 1e-9;
-            Thread.sleep((long) (seconds * 200));
+            Thread.sleep((long) (Math.max(WARM_UP_SECONDS, seconds) * 1000));
             double s0 = server.getSimulation().getSimTime();
             long e0 = ScaleWanderer.EVENTS.get();
             long c0 = cpuNanos();
