@@ -66,8 +66,7 @@ public final class Bench {
         if (all || what.contains("scale")) {
             for (int n : robots) {
                 int status = Child.run(xmx, ScaleArena.class, System.out::println, String.valueOf(n),
-                        String.valueOf(n >= 1000 ? 2 * MEASURE_SECONDS : MEASURE_SECONDS),
-                        String.valueOf(ScaleArena.arenaFor(n)));
+                        String.valueOf(ScaleArena.simulatedFor(n)), String.valueOf(ScaleArena.arenaFor(n)));
                 if (status != 0) {
                     System.out.println(n + " robots in the scale arena: the run failed with status " + status);
                 }

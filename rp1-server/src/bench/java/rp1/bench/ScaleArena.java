@@ -17,10 +17,12 @@ import rp1.simulator.launch.RunningServer;
  * The peers' "scale arena" workload (docs/performance.md) with RP1's own robot and plan: N {@link
  * ScaleWanderer}s in a square arena (40 m, or larger for larger crowds) with diamond pillars on a 5 m
  * grid, loaded in-process, headless, interlock on, {@code simulationSpeed=max}. Run as a process of its
- * own ({@code ScaleArena N SECONDS [ARENA]}) so that its memory figures are its own. The clock is
- * counted from the moment all are placed; after a warm-up as long as the measurement (at least 3 s), simulated
- * seconds per wall second (and per CPU second of the process, which a shared machine disturbs less)
- * and events per second are measured over SECONDS of wall time.
+ * own ({@code ScaleArena N SIMULATED [ARENA]}) so that its memory figures are its own. The clock is
+ * counted from the moment all are placed. A crowd's cost changes as it moves (robots meet, press and
+ * part), so the measure is over simulated time, the same stretch whatever the machine's speed: after
+ * a warm-up of a fifth of SIMULATED seconds, the wall time the next SIMULATED seconds take; printed as
+ * simulated seconds per wall second (and per CPU second of the process, which a shared machine
+ * disturbs less), with events per second.
  */
 public final class ScaleArena {
     private static final double WALL = 0.1;
@@ -29,17 +31,19 @@ public final class ScaleArena {
     private static final double MARGIN = 0.05;
     private static final long PLACEMENT_TIMEOUT_MILLIS = 900_000;
     /**
-     * At least this long, or as long as the measurement, the run warms up first: on a busy machine the
-     * compiler takes seconds to reach the hot path, and a window over its start reads ten times slower.
+     * The run warms up for this part of the simulated time it measures: on a busy machine the compiler
+     * takes seconds to reach the hot path.
      */
-    private static final double WARM_UP_SECONDS = 3.0;
+    private static final double WARM_UP_PART = 5.0;
+    /** A measurement (or its warm-up) that takes longer than this stops there and reports what it got. */
+    private static final long MAX_WALL_MILLIS = 300_000;
 
     private ScaleArena() {
     }
 
     public static void main(String[] args) throws Exception {
         int robots = Integer.parseInt(args[0]);
-        double seconds = Double.parseDouble(args[1]);
+        double simulated = Double.parseDouble(args[1]);
         double arena = args.length > 2 ? Double.parseDouble(args[2]) : 40.0;
         Path plan = Files.createTempFile("rp1-scale", ".txt");
         plan.toFile().deleteOnExit();
@@ -58,22 +62,24 @@ public final class ScaleArena {
                 Thread.sleep(5);
             }
             double placing = (System.nanoTime() - startup) * 1e-9;
-            Thread.sleep((long) (Math.max(WARM_UP_SECONDS, seconds) * 1000));
+            double warm = simulated / WARM_UP_PART;
+            awaitSimTime(server, warm, MAX_WALL_MILLIS);
             double s0 = server.getSimulation().getSimTime();
             long e0 = ScaleWanderer.EVENTS.get();
             long c0 = cpuNanos();
             long t0 = System.nanoTime();
-            Thread.sleep((long) (seconds * 1000));
+            awaitSimTime(server, s0 + simulated, MAX_WALL_MILLIS);
             double wall = (System.nanoTime() - t0) * 1e-9;
             double cpu = (cpuNanos() - c0) * 1e-9;
-            double simulated = server.getSimulation().getSimTime() - s0;
+            double done = server.getSimulation().getSimTime() - s0;
             long events = ScaleWanderer.EVENTS.get() - e0;
             System.gc();
             Runtime rt = Runtime.getRuntime();
             long heap = rt.totalMemory() - rt.freeMemory();
-            System.out.printf(Locale.ROOT, "scale arena %6d robots, %.1f m (%d placed in %.1f s): %,12.2f simulated s per"
-                    + " wall s (%,.2f per CPU s), %,10.0f events/s, heap used %,d MB, resident %,d MB, -Xmx%dm%n", robots, arena,
-                    ScaleWanderer.PLACED.get(), placing, simulated / wall, simulated / cpu, events / wall, heap >> 20,
+            System.out.printf(Locale.ROOT, "scale arena %6d robots, %.1f m (%d placed in %.1f s), simulated %.1f to %.1f s:"
+                    + " %,12.2f simulated s per wall s (%,.2f per CPU s), %,10.0f events/s, heap used %,d MB, resident %,d MB,"
+                    + " -Xmx%dm%n", robots, arena, ScaleWanderer.PLACED.get(), placing, s0, s0 + done, done / wall, done / cpu,
+                    events / wall, heap >> 20,
                     Throughput.residentMegabytes(), rt.maxMemory() >> 20);
         } finally {
             server.stop();
@@ -81,9 +87,22 @@ public final class ScaleArena {
         System.exit(0);
     }
 
+    /** Waits until the simulation's clock reaches {@code time}, or for {@code maxMillis} at most. */
+    private static void awaitSimTime(RunningServer server, double time, long maxMillis) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + maxMillis;
+        while (server.getSimulation().getSimTime() < time && System.currentTimeMillis() < deadline) {
+            Thread.sleep(1);
+        }
+    }
+
     /** CPU time of the whole process: on a shared machine it tells the work done from the share of cores got. */
     private static long cpuNanos() {
         return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
+    }
+
+    /** Simulated seconds measured for a crowd: the peers' bench spans (20,000 s for one robot, 30 s for 1,000). */
+    static double simulatedFor(int robots) {
+        return robots <= 1 ? 20000 : robots <= 10 ? 3000 : robots <= 100 ? 300 : robots <= 1000 ? 30 : 5;
     }
 
     /** The arena side for a crowd: 40 m, or as large as keeps 1,000 robots' density in 40 m. */
