@@ -17,7 +17,9 @@ import rp1.simulator.launch.RunningServer;
  * The peers' "scale arena" workload (docs/performance.md) with RP1's own robot and plan: N {@link
  * ScaleWanderer}s in a square arena (40 m, or larger for larger crowds) with diamond pillars on a 5 m
  * grid, loaded in-process, headless, interlock on, {@code simulationSpeed=max}. Run as a process of its
- * own ({@code ScaleArena N SIMULATED [ARENA]}) so that its memory figures are its own. The clock is
+ * own ({@code ScaleArena N SIMULATED [ARENA [EVENTLOG]]}) so that its memory figures are its own; with
+ * EVENTLOG it only writes the event log of the first SIMULATED seconds (or a little more), to compare
+ * two builds' runs line by line up to a time. The clock is
  * counted from the moment all are placed. A crowd's cost changes as it moves (robots meet, press and
  * part), so the measure is over simulated time, the same stretch whatever the machine's speed: after
  * a warm-up of a fifth of SIMULATED seconds, the wall time the next SIMULATED seconds take; printed as
@@ -45,6 +47,7 @@ public final class ScaleArena {
         int robots = Integer.parseInt(args[0]);
         double simulated = Double.parseDouble(args[1]);
         double arena = args.length > 2 ? Double.parseDouble(args[2]) : 40.0;
+        String eventLog = args.length > 3 ? args[3] : null;
         Path plan = Files.createTempFile("rp1-scale", ".txt");
         plan.toFile().deleteOnExit();
         Files.write(plan, plan(arena, robots).getBytes(StandardCharsets.UTF_8));
@@ -55,13 +58,17 @@ public final class ScaleArena {
         long startup = System.nanoTime();
         RunningServer server = BenchServer.start("floorPlanFileName=" + plan.toAbsolutePath(), "simulationSpeed=max",
                 "interlockEnabled=true", "dlcEnabled=true", names.toString(), "enableNetworkClients=false",
-                "connectTimeout=900");
+                "connectTimeout=900", eventLog == null ? "" : "eventLogFileName=" + eventLog);
         try {
             long deadline = System.currentTimeMillis() + PLACEMENT_TIMEOUT_MILLIS;
             while (ScaleWanderer.PLACED.get() < robots && System.currentTimeMillis() < deadline) {
                 Thread.sleep(5);
             }
             double placing = (System.nanoTime() - startup) * 1e-9;
+            if (eventLog != null) {
+                awaitSimTime(server, simulated, MAX_WALL_MILLIS);
+                return;
+            }
             double warm = simulated / WARM_UP_PART;
             awaitSimTime(server, warm, MAX_WALL_MILLIS);
             double s0 = server.getSimulation().getSimTime();
