@@ -1,6 +1,7 @@
 package rp1.bench;
 
 import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -23,8 +24,8 @@ import rp1.simulator.launch.RunningServer;
  * counted from the moment all are placed. A crowd's cost changes as it moves (robots meet, press and
  * part), so the measure is over simulated time, the same stretch whatever the machine's speed: after
  * a warm-up of a fifth of SIMULATED seconds, the wall time the next SIMULATED seconds take; printed as
- * simulated seconds per wall second (and per CPU second of the process, which a shared machine
- * disturbs less), with events per second.
+ * simulated seconds per wall second (and per CPU second of the Java threads, which a shared
+ * machine disturbs less), with events per second.
  */
 public final class ScaleArena {
     private static final double WALL = 0.1;
@@ -102,9 +103,17 @@ public final class ScaleArena {
         }
     }
 
-    /** CPU time of the whole process: on a shared machine it tells the work done from the share of cores got. */
+    /**
+     * CPU time of the process's Java threads (the simulation's, not the compiler's or the collector's):
+     * on a shared machine it tells the work done from the share of the cores the run got.
+     */
     private static long cpuNanos() {
-        return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
+        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+        long sum = 0;
+        for (long id : threads.getAllThreadIds()) {
+            sum += Math.max(0, threads.getThreadCpuTime(id));
+        }
+        return sum;
     }
 
     /** Simulated seconds measured for a crowd: the peers' bench spans (20,000 s for one robot, 30 s for 1,000). */
