@@ -6,6 +6,7 @@ import java.io.PrintStream;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -19,19 +20,25 @@ import rp1.simulator.batch.SweepException;
 import rp1.simulator.batch.SweepOptions;
 import rp1.simulator.batch.Trail;
 import rp1.view.SweepPicture;
+import rp1.web.SweepIndex;
 
 /**
  * Runs a robot over many seeds and floor plans (docs/guide.md, "Running many"):
  * {@code java rp1.Sweep -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N] [--timeout S] --out DIR
- * [--resume]}. Every (seed, plan) is a headless world in a process of its own; DIR gets {@code results.csv},
+ * [--resume] [--html]}. Every (seed, plan) is a headless world in a process of its own; DIR gets {@code results.csv},
  * one row per run and robot (added as each run ends), {@code summary.png}, every run's trails over
  * its plan, {@code runs/SEED-PLAN/} with each run's recording, event log and end picture, and
- * {@code sweep.ini}, what the sweep was, for {@code --resume}. Exit status 0 when every run ended with
+ * {@code sweep.ini}, what the sweep was, for {@code --resume}, and {@code index.html}, the summary and a
+ * sortable table of the runs, each linked to its replay page (written with {@code --html}). Exit status 0 when every run ended with
  * status 0, 2 when one did not (its row says why), 1 when the sweep could not start, 130 when it was
  * interrupted (Ctrl-C, SIGTERM): the runs going were stopped cleanly, those finished are in the
  * results, and the message says how to go on.
  */
 public final class Sweep {
+    /** The option that writes every run's replay page beside its recording, linked from index.html. */
+    private static final String HTML = "--html";
+    private static final String USAGE = SweepOptions.USAGE + "\n  --html           also write each run's replay page"
+            + " (runs/SEED-PLAN/replay.html), linked from DIR/index.html";
     /** Exit status when some run failed. */
     public static final int RUN_FAILED = 2;
 
@@ -70,14 +77,15 @@ public final class Sweep {
      */
     public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption) {
         SweepOptions options;
+        boolean pages = Arrays.asList(args).contains(HTML);
         try {
-            options = SweepOptions.parse(args);
+            options = SweepOptions.parse(Arrays.stream(args).filter(a -> !a.equals(HTML)).toArray(String[]::new));
         } catch (IllegalArgumentException e) {
-            err.println("rp1.Sweep: " + e.getMessage() + "\n" + SweepOptions.USAGE);
+            err.println("rp1.Sweep: " + e.getMessage() + "\n" + USAGE);
             return 1;
         }
         if (options == null) {
-            out.println(SweepOptions.USAGE);
+            out.println(USAGE);
             return 0;
         }
         try {
@@ -92,6 +100,7 @@ public final class Sweep {
             List<Batch.Outcome> outcomes = result.outcomes();
             Path summary = batch.out().resolve("summary.png");
             SweepPicture.write(summary, panels(batch.plans(), outcomes, options.seeds), keys(options.seeds));
+            index(batch.out(), pages, err);
             long failed = outcomes.stream().filter(o -> !o.report().succeeded()).count();
             if (result.interrupted()) {
                 int missing = batch.runs().size() - outcomes.size();
@@ -102,7 +111,7 @@ public final class Sweep {
                 return Interruption.STATUS;
             }
             out.println("rp1.Sweep: " + (outcomes.size() - failed) + " runs ended as asked, " + failed + " failed; "
-                    + batch.out().resolve("results.csv") + ", " + summary);
+                    + batch.out().resolve("results.csv") + ", " + summary + ", " + batch.out().resolve(SweepIndex.NAME));
             return failed == 0 ? 0 : RUN_FAILED;
         } catch (SweepException | IOException e) {
             err.println("rp1.Sweep: " + e.getMessage());
@@ -111,6 +120,17 @@ public final class Sweep {
             Thread.currentThread().interrupt();
             err.println("rp1.Sweep: interrupted");
             return 1;
+        }
+    }
+
+    /** Writes the sweep's index.html (with each run's replay page if asked); a failure is told, not fatal. */
+    private static void index(Path dir, boolean pages, PrintStream err) {
+        try {
+            for (String failure : SweepIndex.write(dir, pages)) {
+                err.println("rp1.Sweep: no replay page for " + failure);
+            }
+        } catch (IOException e) {
+            err.println("rp1.Sweep: cannot write " + dir.resolve(SweepIndex.NAME) + ": " + e.getMessage());
         }
     }
 

@@ -54,6 +54,10 @@ import rp1.rossum.request.RsPlanRequest;
 import rp1.rossum.request.RsSensorRequest;
 import rp1.rossum.request.RsSubscriptionRequest;
 import rp1.rossum.request.RsTargetSelectionRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.RequestListener;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /**
  * A robot client's session with the simulator: the "brain" side of RP1. Extend it (or hold one),
@@ -86,7 +90,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     public RsProperties rsProperties;
 
     private final HandlerRegistry registry = new HandlerRegistry();
-    private final RequestSink wire = new WireRequests();
+    private final RequestListener wire = new WireRequests();
     private volatile DirectLink link;
     /** Written by the event loop without taking this object's monitor, which senders may hold. */
     private volatile double simTime;
@@ -1044,7 +1048,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      * the wire (a null name, an empty colour list); the direct link copies them into what the server
      * would decode, so both ends see the same thing either way.
      */
-    private RequestSink requests() {
+    private RequestListener requests() {
         DirectLink l = link;
         // After the session has ended, the wire path drops requests with a log line, whichever link it had.
         return l == null || isClosed() ? wire : l.requests();
@@ -1072,7 +1076,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     /** Requests encoded onto the connection's stream, each by its own encoder. */
-    private final class WireRequests implements RequestSink {
+    private final class WireRequests implements RequestListener {
         @Override
         public void timeout(double duration, int timeoutIndex) {
             sendRequest(RequestCodec.timeout(duration, timeoutIndex));
@@ -1106,6 +1110,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         @Override
         public void setPosition() {
             throw new IllegalStateException("the client library never sends SetPosition");
+        }
+
+        @Override
+        public void body(RsBody body) {
+            throw new IllegalStateException("a body goes by sendBodySpecification, not as a request");
         }
 
         @Override

@@ -136,12 +136,12 @@ public final class Simulation {
             session.setWriteGate(() -> interlock.sending(session));
         }
         if (link == Link.READER) {
-            session.setAfterSubmit(this::pump);
+            session.intake().setAfterSubmit(this::pump);
         }
         connection.setProtocolShutdownHandler(() -> {
             if (!interlocked) {
-                session.connectionClosed();
-            } else if (interlock.leave(session, session::queueDeparture)) {
+                session.intake().connectionClosed();
+            } else if (interlock.leave(session, session.intake()::queueDeparture)) {
                 afterRestart.run();
             }
         });

@@ -20,7 +20,8 @@ import rp1.simulator.session.ClientBudgets;
  * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
  * {@code clientQueueLimit}, {@code clientOutputBudget}, {@code clientTimeoutBudget},
  * {@code clientSubscriptionBudget}, {@code clientMessageBudget}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
- * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName} and {@code eventLogFileName}
+ * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName}, {@code eventLogFileName} and
+ * {@code viewPort}
  * (docs/properties.md). Immutable; built
  * by {@link #from}, which validates every value and refuses a key it does not know.
  */
@@ -40,7 +41,8 @@ public final class ServerConfig {
             "bindAddress", "randomSeed", "exitWhenClientsDone", "maxSimulationTime", "connectTimeout",
             "clientQueueLimit", "snapshotFileName", "snapshotInterval", "robotsInteract", "waitForClients",
             "dlcDelivery", "recordFileName", "eventLogFileName",
-            "clientOutputBudget", "clientTimeoutBudget", "clientSubscriptionBudget", "clientMessageBudget");
+            "clientOutputBudget", "clientTimeoutBudget", "clientSubscriptionBudget", "clientMessageBudget",
+            "viewPort");
 
     /**
      * Keys an RP1 0.60 server file may hold that this server does not read, and why: accepted with a
@@ -131,6 +133,8 @@ public final class ServerConfig {
     public final String recordFileName;
     /** Where to write every event sent to a client, one line each (docs/recording.md), or null. */
     public final String eventLogFileName;
+    /** The port a browser watches the run on ({@code viewPort}, docs/properties.md); 0: no live view. */
+    public final int viewPort;
     /** The properties as given (values unparsed), sorted by key: a recording keeps them. */
     public final SortedMap<String, String> given;
     /** What was accepted but is worth saying (a key RP1 0.60 had that this server ignores), one line each. */
@@ -178,6 +182,7 @@ public final class ServerConfig {
         dlcDelivery = Delivery.valueOf(r.choice("dlcDelivery", "auto", "auto", "direct", "pipes").toUpperCase(Locale.ROOT));
         recordFileName = r.string("recordFileName");
         eventLogFileName = r.string("eventLogFileName");
+        viewPort = r.integer("viewPort", 0, 0, 65535);
         given = r.given();
         checkConsistency(r);
     }
