@@ -201,14 +201,12 @@ public class RsProtocol implements RsLogInterface {
 
     @Override
     public void log(String message) {
-        logIt("s", message);
+        LogLevels.standard(this, message);
     }
 
     @Override
     public void verbose(String message) {
-        if (verbosity) {
-            logIt("v", message);
-        }
+        LogLevels.verbose(this, verbosity, message);
     }
 
     @Override
