@@ -81,6 +81,7 @@ public final class Simulation {
         this.host = new SessionHost();
         scheduler.setFailureHandler(e -> log.logIt("X", "A simulation task failed; the simulation goes on: "
                 + describe(e)));
+        world.setNoise(settings.newNoise());
         world.setPlacementListener(this::placedRobotsChanged);
         if (settings.isLockstep()) {
             scheduler.hold();

@@ -20,16 +20,35 @@ import rp1.simulator.snapshot.RobotSnapshot;
  * outlined in its hot colours if the snapshot has it hot, else in its cold ones (a null colour is
  * not drawn); circles as true circles; wheels turned about their hubs by the snapshot's steering
  * angle. The parts' own paint methods read the live hot flag and steering, which the scheduler
- * thread keeps changing, so they are not used here.
+ * thread keeps changing, so they are not used here. A robot whose wheels slip (behavior.md section
+ * 8.9) is drawn over a grey outline of its body where it believes it is.
  */
 final class RobotPainter {
     private RobotPainter() {
     }
 
+    /** The outline of a robot where it believes it is. */
+    private static final Color BELIEF = new Color(150, 150, 150);
+
     static void paint(Graphics2D g, RobotSnapshot robot, RsTransform worldToPixel) {
+        RsTransform belief = robot.believedPose();
+        if (belief != null) {
+            paintBelief(g, robot, new RsTransform(worldToPixel, belief));
+        }
         RsTransform bodyToPixel = new RsTransform(worldToPixel, robot.pose());
         for (PartSnapshot p : robot.parts()) {
             paintPart(g, p, bodyToPixel);
+        }
+    }
+
+    /** Every shape's outline, unfilled, unsteered. */
+    private static void paintBelief(Graphics2D g, RobotSnapshot robot, RsTransform bodyToPixel) {
+        for (PartSnapshot p : robot.parts()) {
+            if (p.part() instanceof RsBodyCircle c) {
+                circle(g, bodyToPixel, c, null, BELIEF);
+            } else if (p.part() instanceof RsBodyShape s) {
+                polygon(g, bodyToPixel, s.getOutlineVertices(), null, BELIEF);
+            }
         }
     }
 

@@ -173,6 +173,19 @@ class RendererTest {
     }
 
     @Test
+    void aRobotWhoseWheelsSlipIsDrawnOverAGreyOutlineWhereItBelievesItIs() {
+        RobotSnapshot r = drove.placedRobots().get(0);
+        RsPlacement h = home();
+        RobotSnapshot slipped = new RobotSnapshot(r.number(), r.label(), true, r.x(), r.y(), r.theta(), r.parts(),
+                new double[] {h.x, h.y, h.orientation});
+        var side = new RsTransform(h.orientation, h.x, h.y).map(0.0, ClientZero.RADIUS);
+        Color grey = new Color(150, 150, 150);
+        assertTrue(probe(withRobot(slipped)).near(side.x, side.y, 1, grey), "the believed chassis's edge at home");
+        assertTrue(!probe(drove).near(side.x, side.y, 1, grey), "nothing there for a robot that does not slip");
+        assertEquals(Color.lightGray, probe(withRobot(slipped)).atBody(endPose(), -0.11, 0.0), "the true robot as ever");
+    }
+
+    @Test
     void unplacedRobotsAreNotDrawn() {
         RobotSnapshot r = drove.placedRobots().get(0);
         PixelProbe p = probe(withRobot(new RobotSnapshot(r.number(), r.label(), false, r.x(), r.y(), r.theta(), r.parts())));

@@ -12,6 +12,7 @@ import java.util.Set;
 import java.util.SortedMap;
 import java.util.TreeMap;
 
+import rp1.simulator.noise.NoiseSettings;
 import rp1.simulator.session.ClientBudgets;
 
 /**
@@ -21,9 +22,8 @@ import rp1.simulator.session.ClientBudgets;
  * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
  * {@code clientQueueLimit}, {@code clientOutputBudget}, {@code clientTimeoutBudget},
  * {@code clientSubscriptionBudget}, {@code clientMessageBudget}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
- * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName}, {@code eventLogFileName} and
- * {@code viewPort}
- * (docs/properties.md). Immutable; built
+ * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName}, {@code eventLogFileName},
+ * {@code viewPort} and the {@code noise...} keys (docs/properties.md). Immutable; built
  * by {@link #from}, which validates every value and refuses a key it does not know.
  */
 public final class ServerConfig {
@@ -43,7 +43,9 @@ public final class ServerConfig {
             "clientQueueLimit", "snapshotFileName", "snapshotInterval", "robotsInteract", "waitForClients",
             "dlcDelivery", "recordFileName", "eventLogFileName",
             "clientOutputBudget", "clientTimeoutBudget", "clientSubscriptionBudget", "clientMessageBudget",
-            "viewPort");
+            "viewPort",
+            "noiseRangeSigma", "noiseRangeDropout", "noiseTargetRangeSigma", "noiseTargetBearingSigma",
+            "noiseEncoderMiss", "noiseSlipDistanceSigma", "noiseSlipTurnSigma");
 
     /**
      * Keys an RP1 0.60 server file may hold that this server does not read, and why: accepted with a
@@ -144,6 +146,8 @@ public final class ServerConfig {
      * Loaded clients read them with {@code RsClient.getRunParameter}; a sweep varies them.
      */
     public final SortedMap<String, String> parameters;
+    /** How noisy sensors and motion are (the {@code noise...} keys); {@link NoiseSettings#OFF} by default. */
+    public final NoiseSettings noise;
     /** The properties as given (values unparsed), sorted by key: a recording keeps them. */
     public final SortedMap<String, String> given;
     /** What was accepted but is worth saying (a key RP1 0.60 had that this server ignores), one line each. */
@@ -192,6 +196,7 @@ public final class ServerConfig {
         recordFileName = r.string("recordFileName");
         eventLogFileName = r.string("eventLogFileName");
         viewPort = r.integer("viewPort", 0, 0, 65535);
+        noise = readNoise(r);
         given = r.given();
         parameters = parameters(r);
         checkConsistency(r);
@@ -222,6 +227,15 @@ public final class ServerConfig {
             throw new ConfigException(where + "simulationSpeed=max needs interlockEnabled=true "
                     + "(without the interlock nothing would hold simulated time back for the clients)");
         }
+    }
+
+    private static NoiseSettings readNoise(PropertyReader r) throws ConfigException {
+        double big = Double.MAX_VALUE;
+        return new NoiseSettings(r.real("noiseRangeSigma", 0.0, 0.0, big), r.real("noiseRangeDropout", 0.0, 0.0, 1.0),
+                r.real("noiseTargetRangeSigma", 0.0, 0.0, big),
+                Math.toRadians(r.real("noiseTargetBearingSigma", 0.0, 0.0, 360.0)),
+                r.real("noiseEncoderMiss", 0.0, 0.0, 1.0), r.real("noiseSlipDistanceSigma", 0.0, 0.0, 10.0),
+                r.real("noiseSlipTurnSigma", 0.0, 0.0, 10.0));
     }
 
     /** What each client may make the server hold. */

@@ -148,7 +148,7 @@ final class MotionStepper implements Task {
         for (Robot r : active) {
             r.advance(time);
             if (r.hasPendingRequest()) {
-                r.startPendingMotion(time, surroundings.wallsForMotion(r, r.pendingRequest()));
+                r.startPendingMotion(time, surroundings.wallsForMotion(r, r.motionToMake()));
                 contacts.motionStarted(r, runs);
                 // Filed where the new motion can take it before any contact search looks it up.
                 surroundings.file(r, time, interval);

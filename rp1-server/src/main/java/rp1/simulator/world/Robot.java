@@ -20,6 +20,7 @@ import rp1.rossum.event.RsMotionStartedEvent;
 import rp1.rossum.event.RsSensorEvent;
 import rp1.rossum.request.RsMotionRequest;
 import rp1.rossum.request.RsPainterChangeRequest;
+import rp1.simulator.noise.RobotNoise;
 
 /**
  * One client's robot in the world: its body, whether it is placed, its motion, the motion request
@@ -28,6 +29,10 @@ import rp1.rossum.request.RsPainterChangeRequest;
  * world's other parts need to remember about a robot (when it is next evaluated, where it is filed,
  * its contact searches) they keep themselves, by its number.
  *
+ * <p>With noise (docs/behavior.md section 8.9) the robot's truth and what its client is told part
+ * here, through its {@link RobotNoise}: the motion made against the one commanded, and each event
+ * that reports a reading or a pose. The pose, the sensors' state and position reports stay the truth.
+ *
  * <p>Everything here runs on the thread running the simulation's tasks (see
  * {@link rp1.simulator.scheduler.Scheduler}); a placement request marks the robot unplaced when it is
  * applied, so requests applied after it see the robot off the floor at once, as in RP1 0.60.
@@ -35,6 +40,8 @@ import rp1.rossum.request.RsPainterChangeRequest;
 public final class Robot {
     private final int number;
     private final EventSink events;
+    /** Where what the client is told parts from the truth ({@link RobotNoise#NONE}: nowhere). */
+    private final RobotNoise noise;
     private final RsBody body;
     private final RobotShapes shapes;
     /** Where the range and target sensors look. */
@@ -43,11 +50,14 @@ public final class Robot {
     private final List<PaintTrail> trails;
     private boolean placed;
     private RsMotionRequest pending;
+    /** The motion the pending request really makes (with wheel slip), once asked for; else null. */
+    private RsMotionRequest made;
     private boolean moving;
     private boolean placementEvaluation;
 
-    Robot(int number, RsBody body, EventSink events) {
+    Robot(int number, RsBody body, EventSink events, RobotNoise noise) {
         this.number = number;
+        this.noise = noise;
         this.body = body;
         this.events = events;
         this.shapes = new RobotShapes(body);
@@ -149,6 +159,15 @@ public final class Robot {
         return m == null ? new RsTransform() : m.transform;
     }
 
+    /**
+     * The pose the robot believes it has at its motion's current time, when wheel slip makes that
+     * differ from {@link #pose()} (docs/behavior.md section 8.9); else null.
+     */
+    public RsTransform believedPose() {
+        RsMotion m = body.getMotion();
+        return m == null ? null : noise.believedPose(m.time);
+    }
+
     /** Whether the motion stepper has work for this robot: moving, a request to start, or just placed. */
     boolean needsProcessing() {
         return placed && (moving || pending != null || placementEvaluation);
@@ -157,15 +176,23 @@ public final class Robot {
     /** A motion request takes effect at the robot's next evaluation, replacing any motion under way. */
     void setPendingRequest(RsMotionRequest request) {
         pending = request;
+        made = null;
     }
 
     boolean hasPendingRequest() {
         return pending != null;
     }
 
-    /** The motion request waiting to start, or null. */
-    RsMotionRequest pendingRequest() {
-        return pending;
+    /**
+     * The motion the request waiting to start will really make: the request itself, or with wheel
+     * slip (docs/behavior.md section 8.9) the request slipped, drawn once, so that the walls it could
+     * meet are gathered for the motion made, not the one commanded. Only when a request waits.
+     */
+    RsMotionRequest motionToMake() {
+        if (made == null) {
+            made = noise.slip(pending);
+        }
+        return made;
     }
 
     /** Puts the robot at a pose with a fresh motion history; its sensors are evaluated next. */
@@ -173,7 +200,10 @@ public final class Robot {
         body.place(time, x, y, orientation);
         moving = false;
         pending = null;
+        made = null;
         placementEvaluation = true;
+        RsTransform at = pose();
+        noise.placed(time, at.m13, at.m23, at.getTheta());
     }
 
     /** Step 1 of an evaluation: the motion, wheels, encoders and paint trails brought to {@code time}. */
@@ -195,15 +225,18 @@ public final class Robot {
      */
     void startPendingMotion(double time, RsWall[] walls) {
         RsMotionRequest request = pending;
+        RsMotionRequest motion = motionToMake();
         pending = null;
+        made = null;
         placementEvaluation = false;
-        body.computeMotion(time, request, walls);
+        noise.begin(time, request);
+        body.computeMotion(time, motion, walls);
         RsMotion m = body.getMotion();
         moving = true;
         if (m.timeTotal > 0.0) {
             RsTransform start = m.transform0;
-            events.sendIfSubscribed(new RsMotionStartedEvent(time, request.linearVelocity, request.rotationalVelocity,
-                    m.timeTotal, start.m13, start.m23, start.getTheta()));
+            events.sendIfSubscribed(noise.started(new RsMotionStartedEvent(time, request.linearVelocity,
+                    request.rotationalVelocity, m.timeTotal, start.m13, start.m23, start.getTheta())));
         }
         for (RsContactSensorEvent e : body.releaseContactSensors(time)) {
             events.sendIfSubscribed(e);
@@ -215,7 +248,7 @@ public final class Robot {
         body.processSensors(time, plan, obstacles, pose());
         for (RsBodySensor s : body.getBodySensorArray()) {
             if (s.didStateChange()) {
-                events.sendIfSubscribed(s.getSensorEvent(time));
+                events.sendIfSubscribed(noise.reading(s, time, true));
             }
         }
     }
@@ -239,7 +272,8 @@ public final class Robot {
             if (!wasPlacement) {
                 RsTransform end = m.transform;
                 int cause = m.collision ? RsMotionHaltedEvent.HALTED_ON_COLLISION : RsMotionHaltedEvent.HALTED_ON_COMPLETION;
-                events.sendIfSubscribed(new RsMotionHaltedEvent(time, cause, end.m13, end.m23, end.getTheta(), m.timeTotal));
+                events.sendIfSubscribed(noise.halted(
+                        new RsMotionHaltedEvent(time, cause, end.m13, end.m23, end.getTheta(), m.timeTotal)));
             }
         }
         return Double.NaN;
@@ -248,6 +282,7 @@ public final class Robot {
     /** A halt request: any waiting request is dropped and a motion under way stops at {@code time}. */
     void halt(double time) {
         pending = null;
+        made = null;
         if (!moving) {
             return;
         }
@@ -256,8 +291,8 @@ public final class Robot {
         m.setTime(time);
         moving = false;
         RsTransform at = m.transform;
-        events.sendIfSubscribed(new RsMotionHaltedEvent(time, RsMotionHaltedEvent.HALTED_ON_REQUEST, at.m13, at.m23,
-                at.getTheta(), m.timeTotal));
+        events.sendIfSubscribed(noise.halted(new RsMotionHaltedEvent(time, RsMotionHaltedEvent.HALTED_ON_REQUEST, at.m13,
+                at.m23, at.getTheta(), m.timeTotal)));
     }
 
     /** Sends the position report at {@code time} (the last pose if unplaced; zeros before any placement). */
@@ -277,7 +312,7 @@ public final class Robot {
     public void reportSensor(int id, double time) {
         RsBodyPart part = body.getPartByID(id);
         if (placed && part instanceof RsBodySensor) {
-            RsSensorEvent e = ((RsBodySensor) part).getSensorEvent(time);
+            RsSensorEvent e = noise.reading((RsBodySensor) part, time, false);
             if (e != null) {
                 events.send(e);
             }
@@ -298,7 +333,7 @@ public final class Robot {
             if (wheel == null) {
                 missing++;
             } else {
-                events.send(wheel.getEncoderStatusEvent(time, requestIndex, clear));
+                events.send(noise.encoder(wheel.getEncoderStatusEvent(time, requestIndex, clear)));
             }
         }
         return missing;

@@ -13,6 +13,7 @@ import rp1.rossum.event.RsTargetSelectionEvent;
 import rp1.rossum.request.RsMotionRequest;
 import rp1.rossum.request.RsPainterChangeRequest;
 import rp1.rossum.request.RsTargetSelectionRequest;
+import rp1.simulator.noise.Noise;
 import rp1.simulator.scheduler.Scheduler;
 
 /**
@@ -40,6 +41,8 @@ public final class World {
     private final List<PaintTrail> departedTrails = new CopyOnWriteArrayList<>();
     private IntConsumer placementListener = n -> { };
     private int joined;
+    /** The run's noise, which gives each robot that joins its own. */
+    private Noise noise = Noise.OFF;
 
     /**
      * @param plan           the floor plan
@@ -59,6 +62,14 @@ public final class World {
     /** A world whose robots meet each other. */
     public World(RsPlan plan, Scheduler scheduler, double interval, Random random) {
         this(plan, scheduler, interval, random, true);
+    }
+
+    /**
+     * Sensors and motion of the robots that join from now on are as noisy as {@code noise} says
+     * (default {@link Noise#OFF}: exact, as in RP1 0.60).
+     */
+    public void setNoise(Noise noise) {
+        this.noise = noise;
     }
 
     /** Told the number of robots on the floor whenever it changes. */
@@ -96,7 +107,8 @@ public final class World {
 
     /** A client's body joins the world as an unplaced robot. */
     public Robot addRobot(RsBody body, EventSink events) {
-        Robot r = new Robot(++joined, body, events);
+        joined++;
+        Robot r = new Robot(joined, body, events, noise.forRobot(joined));
         robots.add(r);
         return r;
     }

@@ -48,6 +48,32 @@ class ServerConfigTest {
         assertTrue(c.dlcSetIO);
         assertTrue(c.dlcSetLog);
         assertFalse(c.randomSeed.isPresent());
+        assertTrue(c.noise.isOff(), "no noise unless asked");
+    }
+
+    @Test
+    void noiseKeysSetEachFigureAndTheBearingIsInDegrees() throws Exception {
+        ServerConfig c = config("floorPlanFileName=x\nnoiseRangeSigma=0.02\nnoiseRangeDropout=0.1\n"
+                + "noiseTargetRangeSigma=0.05\nnoiseTargetBearingSigma=3\nnoiseEncoderMiss=0.01\n"
+                + "noiseSlipDistanceSigma=0.04\nnoiseSlipTurnSigma=0.08\n");
+        assertEquals(0.02, c.noise.rangeSigma);
+        assertEquals(0.1, c.noise.rangeDropout);
+        assertEquals(0.05, c.noise.targetRangeSigma);
+        assertEquals(Math.toRadians(3), c.noise.targetBearingSigma, 1e-15);
+        assertEquals(0.01, c.noise.encoderMiss);
+        assertEquals(0.04, c.noise.slipDistanceSigma);
+        assertEquals(0.08, c.noise.slipTurnSigma);
+        assertFalse(c.noise.isOff());
+    }
+
+    @Test
+    void aNoiseProbabilityAboveOneOrANegativeSigmaIsRefusedByName() {
+        ConfigException dropout = assertThrows(ConfigException.class,
+                () -> config("floorPlanFileName=x\nnoiseRangeDropout=1.5\n"));
+        assertTrue(dropout.getMessage().contains("noiseRangeDropout"), dropout.getMessage());
+        ConfigException sigma = assertThrows(ConfigException.class,
+                () -> config("floorPlanFileName=x\nnoiseSlipTurnSigma=-0.1\n"));
+        assertTrue(sigma.getMessage().contains("noiseSlipTurnSigma"), sigma.getMessage());
     }
 
     @Test
