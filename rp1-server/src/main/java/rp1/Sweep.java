@@ -15,6 +15,7 @@ import rp1.simulator.batch.Batch;
 import rp1.simulator.batch.Interruption;
 import rp1.simulator.batch.Progress;
 import rp1.simulator.batch.RobotResult;
+import rp1.simulator.batch.RunEngine;
 import rp1.simulator.batch.SweepException;
 import rp1.simulator.batch.SweepOptions;
 import rp1.simulator.batch.Trail;
@@ -69,6 +70,17 @@ public final class Sweep {
      * @return the exit status
      */
     public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption) {
+        return run(args, out, err, terminal, interruption, null);
+    }
+
+    /**
+     * Runs the sweep the command line asks for, its runs carried out by the engine {@code engines}
+     * makes (rp1-spark's), or each in a process of its own if it is null.
+     *
+     * @return the exit status
+     */
+    public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption,
+                          RunEngine.Factory engines) {
         SweepOptions options;
         try {
             options = SweepOptions.parse(args);
@@ -82,6 +94,9 @@ public final class Sweep {
         }
         try {
             Batch batch = Batch.prepare(options, Paths.get("").toAbsolutePath(), Sweep.class.getClassLoader());
+            if (engines != null) {
+                batch.useEngine(engines.open(batch));
+            }
             interruption.onStop(batch::stop);
             int toRun = batch.runs().size() - batch.kept().size();
             out.println("rp1.Sweep: " + batch.runs().size() + " runs (" + options.seeds.size() + " seeds on "

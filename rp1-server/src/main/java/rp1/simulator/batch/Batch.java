@@ -68,6 +68,8 @@ public final class Batch {
     private final Set<Process> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
     private final List<Path> classPath;
+    /** Carries out the runs instead of a process per run, if set ({@link #useEngine}). */
+    private volatile RunEngine engine;
 
     /** One (seed, plan) of the sweep and the folder it runs in. */
     public record Run(long seed, String plan, Path dir) {
@@ -235,6 +237,21 @@ public final class Batch {
         return plans;
     }
 
+    /** The robot's class path (-cp), made absolute; empty when its classes are the simulator's. */
+    public List<Path> robotClassPath() {
+        return classPath;
+    }
+
+    /** The options the sweep was prepared with. */
+    public SweepOptions options() {
+        return options;
+    }
+
+    /** Carries out the runs with {@code engine} rather than each in a process of its own. */
+    public void useEngine(RunEngine engine) {
+        this.engine = engine;
+    }
+
     /** The runs an earlier sweep into the same folder finished (--resume); they are not run again. */
     public List<Outcome> kept() {
         return kept;
@@ -295,6 +312,10 @@ public final class Batch {
      */
     public void stop() {
         stopping = true;
+        RunEngine given = engine;
+        if (given != null) {
+            given.stopAll();
+        }
         running.forEach(Process::destroy);
         Thread killer = new Thread(() -> {
             try {
@@ -317,7 +338,7 @@ public final class Batch {
         long start = System.nanoTime();
         RunReport report;
         try {
-            report = runProcess(run);
+            report = engine == null ? runProcess(run) : runByEngine(run);
         } catch (IOException e) {
             report = RunReport.failed("the run could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED);
         }
@@ -328,11 +349,22 @@ public final class Batch {
         return new Outcome(run, report, wall, trails(run));
     }
 
-    private RunReport runProcess(Run run) throws IOException, InterruptedException {
+    private RunReport runByEngine(Run run) throws IOException, InterruptedException {
+        prepareFolder(run);
+        RunReport report = engine.run(run);
+        return stopping && (report.endReason().equals("stopped") || Double.isNaN(report.endTime())) ? null : report;
+    }
+
+    /** The run's folder with its properties, and nothing an earlier run left. */
+    private void prepareFolder(Run run) throws IOException {
         Files.createDirectories(run.dir());
         Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
         Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
         Files.write(run.dir().resolve(SweepRun.PROPERTIES), properties(run).getBytes(StandardCharsets.UTF_8));
+    }
+
+    private RunReport runProcess(Run run) throws IOException, InterruptedException {
+        prepareFolder(run);
         Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(), runArguments(run)))
                 .redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();

@@ -1,0 +1,19 @@
+package rp1.spark;
+
+import java.io.IOException;
+import java.io.Serializable;
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * How an executor carries out one run whose folder holds its {@code run.ini}: as the sweep's own
+ * engine would on one machine. It leaves the run's report and files in the folder, a failed report
+ * when the run failed by itself; it throws only when this machine could not carry it out at all.
+ */
+interface LocalRun extends Serializable {
+    /**
+     * @param robotClassPath where the robot's classes are on this machine (empty: the simulator's own)
+     * @param timeoutSeconds wall seconds after which the run is stopped and reported as failed
+     */
+    void run(Path dir, List<Path> robotClassPath, double timeoutSeconds) throws IOException, InterruptedException;
+}
