@@ -49,11 +49,14 @@ public final class Cluster implements AutoCloseable {
     private final Process master;
     private final String masterUrl;
     private final List<Process> workers = new ArrayList<>();
+    /** Stops the daemons if this JVM ends without closing the cluster: they never outlive it. */
+    private final Thread stopOnExit = new Thread(this::stopAll, "stop the cluster");
 
     private Cluster(Path dir, Process master, String masterUrl) {
         this.dir = dir;
         this.master = master;
         this.masterUrl = masterUrl;
+        Runtime.getRuntime().addShutdownHook(stopOnExit);
     }
 
     /**
@@ -159,6 +162,16 @@ public final class Cluster implements AutoCloseable {
     /** Stops the workers (and their executors), then the master. */
     @Override
     public void close() {
+        try {
+            Runtime.getRuntime().removeShutdownHook(stopOnExit);
+        } catch (IllegalStateException e) {
+            // The JVM is ending: the hook stops them.
+            return;
+        }
+        stopAll();
+    }
+
+    private void stopAll() {
         workers.forEach(Cluster::destroy);
         destroy(master);
     }
@@ -208,7 +221,6 @@ public final class Cluster implements AutoCloseable {
         try {
             Path folder = dir != null ? dir : Files.createTempDirectory("rp1-cluster-");
             Cluster cluster = start(workers, cores, memory, folder);
-            Runtime.getRuntime().addShutdownHook(new Thread(cluster::close, "stop the cluster"));
             out.println("rp1 cluster: master " + cluster.masterUrl() + ", " + workers + " worker" + (workers == 1 ? "" : "s")
                     + " of " + cores + " core" + (cores == 1 ? "" : "s") + " and " + memory + "; logs in " + folder
                     + ". Ctrl-C stops them.\n  rp1 sweep ... --master " + cluster.masterUrl());

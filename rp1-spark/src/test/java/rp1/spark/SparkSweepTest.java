@@ -36,18 +36,19 @@ class SparkSweepTest {
     private static final int RUNS = 32;
 
     @TempDir
-    Path dir;
+    static Path dir;
     private Path properties;
     private List<String> local;
     private Cluster cluster;
+    private CompletableFuture<Cluster> starting;
 
     @BeforeAll
     void localEngineAndCluster() throws Exception {
         // Short runs: the bumper car for 20 simulated seconds.
         String bumper = new String(getClass().getResourceAsStream("/Properties/bumper.ini").readAllBytes(),
                 StandardCharsets.UTF_8);
-        properties = Files.writeString(dir.resolve("short.ini"), bumper + "\nmaxSimulationTime=20\nsnapshotFileName=\n");
-        CompletableFuture<Cluster> starting = CompletableFuture.supplyAsync(() -> {
+        properties = Files.writeString(dir.resolve("short.ini"), bumper + "\nmaxSimulationTime=20\n");
+        starting = CompletableFuture.supplyAsync(() -> {
             try {
                 return Cluster.start(2, 1, "1g", dir.resolve("cluster"));
             } catch (IOException | InterruptedException e) {
@@ -59,10 +60,8 @@ class SparkSweepTest {
     }
 
     @AfterAll
-    void stopCluster() {
-        if (cluster != null) {
-            cluster.close();
-        }
+    void stopCluster() throws Exception {
+        starting.get(120, TimeUnit.SECONDS).close();
     }
 
     @Test
