@@ -30,7 +30,7 @@ public final class SparkSweep {
             "  --master URL   carry the runs out on Apache Spark: local[N] (N threads of this process),",
             "                 spark://HOST:PORT (a standalone cluster; rp1 cluster starts one), or yarn, k8s://...",
             "                 through spark-submit; --jobs then says how many runs are submitted at once",
-            "                 (default: four per executor core)",
+            "                 (default: the executors' cores when the sweep starts)",
             "  --keep NAMES   files of each run (recording.txt, events.txt, end.png, ... or all) to bring back",
             "                 from the executors whatever their size; others larger than 4 MB stay there");
     /** How long the sweep waits for the first executor of a cluster. */
@@ -96,7 +96,7 @@ public final class SparkSweep {
             if (!jobsGiven) {
                 waitForExecutors(spark, master, out);
                 rest.add("--jobs");
-                rest.add(Integer.toString(Math.min(1000, 4 * spark.defaultParallelism())));
+                rest.add(Integer.toString(Math.min(1000, spark.defaultParallelism())));
             }
             return Sweep.run(rest.toArray(new String[0]), out, err, terminal, interruption,
                     batch -> SparkRuns.open(spark, batch, keep, new ProcessRun(), Paths.get("").toAbsolutePath()));
@@ -130,15 +130,28 @@ public final class SparkSweep {
         }
     }
 
-    /** On a cluster, until an executor has come (without one, its number of cores is not known yet). */
+    /**
+     * On a cluster, until the executors have come (without them, their cores are not known): until
+     * one has, and then no other for a second.
+     */
     private static void waitForExecutors(JavaSparkContext spark, String master, PrintStream out) {
         if (master.startsWith("local")) {
             return;
         }
         out.println("rp1.Sweep: waiting for the executors of " + master);
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(EXECUTOR_WAIT_SECONDS);
-        // The driver is one of the "executors" the tracker lists.
-        while (spark.sc().statusTracker().getExecutorInfos().length < 2 && System.nanoTime() < end) {
+        long quiet = 0;
+        int seen = 0;
+        while (System.nanoTime() < end) {
+            // The driver is one of the "executors" the tracker lists.
+            int now = spark.sc().statusTracker().getExecutorInfos().length - 1;
+            if (now > 0 && now == seen && ++quiet >= 10) {
+                return;
+            }
+            if (now != seen) {
+                quiet = 0;
+                seen = now;
+            }
             try {
                 Thread.sleep(100);
             } catch (InterruptedException e) {
