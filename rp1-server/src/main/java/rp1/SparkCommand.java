@@ -95,8 +95,9 @@ final class SparkCommand {
         Process child;
         try {
             ProcessBuilder b = new ProcessBuilder(command(main, args, library)).inheritIO();
-            // Spark takes the machine's address to bind to; for local[N] and rp1 cluster that is 127.0.0.1.
-            if (main.equals(CLUSTER) || Arrays.stream(args).anyMatch(a -> a.startsWith("local"))) {
+            // Spark takes the machine's address to bind to; for local[N], rp1 cluster and a cluster on
+            // this machine that is 127.0.0.1.
+            if (main.equals(CLUSTER) || Arrays.stream(args).anyMatch(a -> a.matches("local.*|spark://(127\\.0\\.0\\.1|localhost)[:/].*"))) {
                 b.environment().putIfAbsent("SPARK_LOCAL_IP", "127.0.0.1");
             }
             child = b.start();
