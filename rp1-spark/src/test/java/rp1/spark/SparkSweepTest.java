@@ -44,10 +44,12 @@ class SparkSweepTest {
 
     @BeforeAll
     void localEngineAndCluster() throws Exception {
-        // Short runs: the bumper car for 20 simulated seconds.
+        // Short runs: the bumper car for 20 simulated seconds, each a fifth of a second longer in wall
+        // time than it needs (SlowBumper), so that a worker killed after five runs leaves some to do.
         String bumper = new String(getClass().getResourceAsStream("/Properties/bumper.ini").readAllBytes(),
                 StandardCharsets.UTF_8);
-        properties = Files.writeString(dir.resolve("short.ini"), bumper + "\nmaxSimulationTime=20\n");
+        properties = Files.writeString(dir.resolve("short.ini"), bumper
+                + "\nmaxSimulationTime=20\ndlcName=" + SlowBumper.class.getName() + "\n");
         starting = CompletableFuture.supplyAsync(() -> {
             try {
                 return Cluster.start(2, 1, "1g", dir.resolve("cluster"));
@@ -97,18 +99,36 @@ class SparkSweepTest {
         assertEquals(local, rows(out));
     }
 
+    @Test
+    void aRunThatFailsByItselfIsARowWithItsReasonOnSparkAsOnItsOwn() throws Exception {
+        Path failing = Files.writeString(dir.resolve("failing.ini"), Files.readString(properties)
+                + "dlcName=" + FailingRobot.class.getName() + "\n");
+        List<String> own = rows(sweep(failing, null, "1-2", "failing-own", Sweep.RUN_FAILED));
+        assertEquals(own, rows(sweep(failing, "local[2]", "1-2", "failing-spark", Sweep.RUN_FAILED)));
+        assertEquals(3, own.size(), own.toString());
+        assertTrue(own.get(1).contains("this robot always fails"), own.get(1));
+    }
+
     private Path sweep(String master, String seeds, String name) {
+        return sweep(properties, master, seeds, name, 0);
+    }
+
+    private Path sweep(Path ini, String master, String seeds, String name, int expected) {
         Path out = dir.resolve(name);
         ByteArrayOutputStream text = new ByteArrayOutputStream();
         PrintStream print = new PrintStream(text, true, StandardCharsets.UTF_8);
-        int status = master == null ? Sweep.run(args(null, seeds, out), print, print, false)
-                : SparkSweep.run(args(master, seeds, out), print, print, false, new Interruption());
-        assertEquals(0, status, text.toString(StandardCharsets.UTF_8));
+        int status = master == null ? Sweep.run(args(ini, null, seeds, out), print, print, false)
+                : SparkSweep.run(args(ini, master, seeds, out), print, print, false, new Interruption());
+        assertEquals(expected, status, text.toString(StandardCharsets.UTF_8));
         return out;
     }
 
     private String[] args(String master, String seeds, Path out) {
-        List<String> a = new ArrayList<>(List.of("-p", properties.toString(), "--seeds", seeds, "--out", out.toString()));
+        return args(properties, master, seeds, out);
+    }
+
+    private String[] args(Path ini, String master, String seeds, Path out) {
+        List<String> a = new ArrayList<>(List.of("-p", ini.toString(), "--seeds", seeds, "--out", out.toString()));
         if (master != null) {
             a.addAll(List.of("--master", master));
         } else {
