@@ -174,7 +174,7 @@ def test_the_limit_can_be_set_per_client_and_must_be_positive(serve) -> None:
 
 
 def test_the_default_limit_is_the_java_librarys() -> None:
-    source = (REPO_ROOT / "rp1-rossum" / "src" / "main" / "java" / "rp1" / "rossum" / "WireLimits.java").read_text()
+    source = (REPO_ROOT / "rp1-rossum" / "src" / "main" / "java" / "rp1" / "rossum" / "wire" / "WireLimits.java").read_text()
     java = re.search(r"MAX_MESSAGE_BYTES = (\d+) << (\d+);", source)
     assert java is not None, "WireLimits.MAX_MESSAGE_BYTES is no longer written as A << B"
     assert codes.MAX_MESSAGE_BYTES == int(java.group(1)) << int(java.group(2))

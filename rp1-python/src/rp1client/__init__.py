@@ -20,6 +20,7 @@ from .requests import (ActuatorControlRequest, EncoderStatusRequest, HaltRequest
                        PainterChangeRequest, PlacementRequest, PlanRequest, PositionRequest, Request,
                        SensorStatusRequest, SetPositionRequest, SubscriptionRequest, TargetSelectionRequest,
                        TimeoutRequest, decode_request, encode_request)
+from .run import report_run_result, run_parameter, run_seed
 from .settings import ClientSettings
 from .steering import AckermanSteering, Caster, DifferentialSteering, Wheel, WheelSystem
 from .wire import Color
@@ -35,5 +36,6 @@ __all__ = [
     "SetPositionRequest", "SettingsError", "Shape", "SubscriptionRequest", "Target", "TargetSelectionEvent",
     "TargetSelectionRequest", "TargetSensor", "TargetSensorEvent", "TimeoutEvent", "TimeoutRequest", "Wall",
     "Wheel", "WheelSystem", "decode_body", "decode_event", "decode_plan", "decode_request", "encode_body",
-    "encode_event", "encode_plan", "encode_request", "next_part_id", "set_next_part_id",
+    "encode_event", "encode_plan", "encode_request", "next_part_id", "report_run_result", "run_parameter", "run_seed",
+    "set_next_part_id",
 ]

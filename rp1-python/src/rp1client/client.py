@@ -8,6 +8,7 @@ event is acknowledged after all its handlers have run, even when it has none.
 
 import itertools
 import logging
+import os
 import select
 import socket
 import struct
@@ -15,7 +16,7 @@ import threading
 import time
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Type, TypeVar, Union
 
-from . import codes
+from . import codes, run
 from .body import Body, BodyPart, ContactSensor, PaintSensor, Painter, RangeSensor, Sensor, TargetSensor
 from .bodycodec import encode_body, read_body
 from .errors import ProtocolError
@@ -57,7 +58,8 @@ class Client:
         client.send_placement_request("home")
         client.run()
 
-    Without ``host`` or ``port`` the missing one comes from ``./rossum.ini`` (or the defaults,
+    Without ``host`` or ``port`` the missing one comes from ``RP1_HOST`` and ``RP1_PORT`` when a
+    sweep started the program (:mod:`rp1client.run`), else from ``./rossum.ini`` (or the defaults,
     127.0.0.1:7758). Register handlers after :meth:`connect`: a subscription that would be sent
     before the connection exists is skipped, as in the Java library. The ``send_...`` methods may be
     called from any thread; handlers run on the thread that calls :meth:`run`.
@@ -71,6 +73,9 @@ class Client:
                  max_message_bytes: int = codes.MAX_MESSAGE_BYTES) -> None:
         if isinstance(max_message_bytes, bool) or not isinstance(max_message_bytes, int) or max_message_bytes < 1:
             raise ValueError(f"max_message_bytes must be a positive int, got {max_message_bytes!r}")
+        if host is None and port is None and settings is None and run.PORT_VARIABLE in os.environ:
+            host = os.environ.get(run.HOST_VARIABLE, "127.0.0.1")
+            port = int(os.environ[run.PORT_VARIABLE])
         if host is None or port is None:
             settings = settings or ClientSettings.from_working_directory()
             host = settings.host_name if host is None else host
@@ -97,6 +102,24 @@ class Client:
         self._end = 0
         self.max_message_bytes = max_message_bytes
         self._handshake_deadline: Optional[float] = None
+
+    # ------------------------------------------------------------------------------------------
+    # The run (a sweep's --client): parameters, seed and results of the robot's own
+
+    @staticmethod
+    def get_run_parameter(name: str) -> Optional[str]:
+        """The run's parameter ``name`` (``param.NAME``), or None outside a sweep (:mod:`rp1client.run`)."""
+        return run.run_parameter(name)
+
+    @staticmethod
+    def get_run_seed() -> int:
+        """The run's seed, or 0 outside a sweep."""
+        return run.run_seed()
+
+    @staticmethod
+    def report_run_result(name: str, value: float) -> None:
+        """Reports a result of the robot's own (column ``result.NAME``); the last value wins."""
+        run.report_run_result(name, value)
 
     # ------------------------------------------------------------------------------------------
     # Connection

@@ -17,11 +17,14 @@ import rp1.simulator.record.Replayer;
 import rp1.simulator.snapshot.WorldSnapshot;
 import rp1.view.Pictures;
 import rp1.view.Renderer;
+import rp1.web.ReplayPage;
+import rp1.web.RunTrace;
 
 /**
  * Replays a recorded run without its clients (docs/recording.md):
- * {@code java rp1.Replay FILE [--events OUT] [--snapshot OUT.png] [--until T]}. The event log it
- * writes is the one the run wrote, byte for byte, and the picture the one the run left. Exit status 0
+ * {@code java rp1.Replay FILE [--events OUT] [--snapshot OUT.png] [--html OUT.html] [--until T]}. The
+ * event log it writes is the one the run wrote, byte for byte, the picture the one the run left, and
+ * the page plays the run in a browser. Exit status 0
  * when replayed, 1 when the recording cannot be replayed or what the replay writes cannot be written
  * (the message says why), 3 when the replay reached the end of the run but sent other events than the
  * run did, 4 when the recording is partial (the run was killed) and was replayed as far as it goes.
@@ -33,10 +36,11 @@ public final class Replay {
     public static final int PARTIAL = 4;
 
     static final String USAGE = String.join("\n",
-            "usage: java rp1.Replay RECORDING [--events OUT] [--snapshot OUT.png] [--until T]",
+            "usage: java rp1.Replay RECORDING [--events OUT] [--snapshot OUT.png] [--html OUT.html] [--until T]",
             "  RECORDING        a file written by the server with recordFileName",
             "  --events OUT     write every event sent, one line each, as eventLogFileName does",
             "  --snapshot PNG   write a picture of the world where the replay stops",
+            "  --html PAGE      write a page that plays the run in a browser (one self-contained file)",
             "  --until T        stop at simulated time T (seconds) instead of the end of the run",
             "  -h, --help       print this and exit");
 
@@ -69,6 +73,7 @@ public final class Replay {
             }
             Replayer replayer = Replayer.prepare(recording, o.events, log(err));
             RunStatistics paths = RunStatistics.watch(replayer.simulation());
+            RunTrace trace = o.html == null ? null : RunTrace.attach(replayer.simulation());
             Replayer.Outcome outcome = replayer.run(o.until);
             if (replayer.eventLogFailure() != null) {
                 err.println("rp1.Replay: " + replayer.eventLogFailure());
@@ -78,6 +83,9 @@ public final class Replay {
                 Renderer renderer = new Renderer(replayer.simulation().getWorld().getPlan());
                 WorldSnapshot snapshot = WorldSnapshot.of(replayer.simulation().getWorld(), outcome.time());
                 Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, paths.trails()), o.snapshot);
+            }
+            if (trace != null) {
+                ReplayPage.write(trace, o.recording.getFileName().toString(), outcome.time(), o.html);
             }
             return report(recording, outcome, o, out, err);
         } catch (RecordingException | IOException e) {
@@ -137,6 +145,7 @@ public final class Replay {
         Path recording;
         Path events;
         Path snapshot;
+        Path html;
         double until = Double.POSITIVE_INFINITY;
 
         /** The options, or null if help was asked for. */
@@ -149,6 +158,7 @@ public final class Replay {
                     }
                     case "--events" -> o.events = Paths.get(value(args, ++i, "--events"));
                     case "--snapshot" -> o.snapshot = Paths.get(value(args, ++i, "--snapshot"));
+                    case "--html" -> o.html = Paths.get(value(args, ++i, "--html"));
                     case "--until" -> o.until = time(value(args, ++i, "--until"));
                     default -> {
                         if (args[i].startsWith("-") || o.recording != null) {

@@ -1,38 +1,43 @@
 package rp1;
 
-import java.awt.Color;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
-import java.util.HashMap;
+import java.util.Arrays;
 import java.util.List;
-import java.util.Map;
 
-import rp1.rossum.RsPlan;
 import rp1.simulator.batch.Batch;
 import rp1.simulator.batch.Interruption;
 import rp1.simulator.batch.Progress;
-import rp1.simulator.batch.RobotResult;
+import rp1.simulator.batch.ResultsCsv;
+import rp1.simulator.batch.ResultsNotes;
 import rp1.simulator.batch.RunEngine;
+import rp1.simulator.batch.SummaryCsv;
 import rp1.simulator.batch.SweepException;
 import rp1.simulator.batch.SweepOptions;
-import rp1.simulator.batch.Trail;
-import rp1.view.SweepPicture;
+import rp1.web.SweepIndex;
 
 /**
- * Runs a robot over many seeds and floor plans (docs/guide.md, "Running many"):
- * {@code java rp1.Sweep -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N] [--timeout S] --out DIR
- * [--resume]}. Every (seed, plan) is a headless world in a process of its own; DIR gets {@code results.csv},
- * one row per run and robot (added as each run ends), {@code summary.png}, every run's trails over
- * its plan, {@code runs/SEED-PLAN/} with each run's recording, event log and end picture, and
- * {@code sweep.ini}, what the sweep was, for {@code --resume}. Exit status 0 when every run ended with
+ * Runs a robot over many configurations, seeds and floor plans (docs/guide.md, "Running many" and
+ * "Experiments"): {@code java rp1.Sweep -p FILE.ini --seeds 1-16 [--vary KEY=V1,V2 ...] [--plans a.txt,b.txt]
+ * [--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] --out DIR [--resume] [--html]}. Every run is
+ * a headless world of its own; DIR gets {@code results.csv}, one row per run and robot (added as each
+ * run ends), {@code summary.csv}, statistics per configuration, {@code results.md}, the columns'
+ * units, {@code summary.png}, box plots and trails per configuration, {@code runs/.../} with each
+ * run's recording, event log and end picture, and {@code sweep.ini}, what the sweep was, for
+ * {@code --resume}, and {@code index.html}, the summary and a sortable table of the runs, each linked
+ * to its replay page (written with {@code --html}). Exit status 0 when every run ended with
  * status 0, 2 when one did not (its row says why), 1 when the sweep could not start, 130 when it was
  * interrupted (Ctrl-C, SIGTERM): the runs going were stopped cleanly, those finished are in the
  * results, and the message says how to go on.
  */
 public final class Sweep {
+    /** The option that writes every run's replay page beside its recording, linked from index.html. */
+    private static final String HTML = "--html";
+    private static final String USAGE = SweepOptions.USAGE + "\n  --html           also write each run's replay page"
+            + " (runs/SEED-PLAN/replay.html), linked from DIR/index.html";
     /** Exit status when some run failed. */
     public static final int RUN_FAILED = 2;
 
@@ -75,21 +80,22 @@ public final class Sweep {
 
     /**
      * Runs the sweep the command line asks for, its runs carried out by the engine {@code engines}
-     * makes (rp1-spark's), or each in a process of its own if it is null.
+     * makes (rp1-spark's), or by the one {@code --isolation} asks for if it is null.
      *
      * @return the exit status
      */
     public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption,
                           RunEngine.Factory engines) {
         SweepOptions options;
+        boolean pages = Arrays.asList(args).contains(HTML);
         try {
-            options = SweepOptions.parse(args);
+            options = SweepOptions.parse(Arrays.stream(args).filter(a -> !a.equals(HTML)).toArray(String[]::new));
         } catch (IllegalArgumentException e) {
-            err.println("rp1.Sweep: " + e.getMessage() + "\n" + SweepOptions.USAGE);
+            err.println("rp1.Sweep: " + e.getMessage() + "\n" + USAGE);
             return 1;
         }
         if (options == null) {
-            out.println(SweepOptions.USAGE);
+            out.println(USAGE);
             return 0;
         }
         try {
@@ -99,14 +105,19 @@ public final class Sweep {
             }
             interruption.onStop(batch::stop);
             int toRun = batch.runs().size() - batch.kept().size();
-            out.println("rp1.Sweep: " + batch.runs().size() + " runs (" + options.seeds.size() + " seeds on "
+            out.println("rp1.Sweep: " + batch.runs().size() + " runs (" + (options.varied.isEmpty() ? ""
+                    : options.configurations() + " configurations, ") + options.seeds.size() + " seeds on "
                     + batch.plans().size() + " plan" + (batch.plans().size() == 1 ? "" : "s") + "), " + options.jobs
                     + " at a time, into " + batch.out()
                     + (options.resume ? "; " + batch.kept().size() + " finished before, " + toRun + " to run" : ""));
             Batch.Result result = batch.run(new Progress(toRun, out, terminal));
             List<Batch.Outcome> outcomes = result.outcomes();
             Path summary = batch.out().resolve("summary.png");
-            SweepPicture.write(summary, panels(batch.plans(), outcomes, options.seeds), keys(options.seeds));
+            List<SummaryCsv.Row> rows = SummaryCsv.write(batch.out().resolve("results.csv"),
+                    batch.out().resolve("summary.csv"), batch.variedKeys());
+            ResultsNotes.write(batch.out(), batch.variedKeys(), ResultsCsv.resultNames(outcomes));
+            SweepSummary.write(summary, rows, batch.variedKeys(), batch.plans(), outcomes);
+            index(batch.out(), pages, err);
             long failed = outcomes.stream().filter(o -> !o.report().succeeded()).count();
             if (result.interrupted()) {
                 int missing = batch.runs().size() - outcomes.size();
@@ -117,7 +128,7 @@ public final class Sweep {
                 return Interruption.STATUS;
             }
             out.println("rp1.Sweep: " + (outcomes.size() - failed) + " runs ended as asked, " + failed + " failed; "
-                    + batch.out().resolve("results.csv") + ", " + summary);
+                    + batch.out().resolve("results.csv") + ", " + summary + ", " + batch.out().resolve(SweepIndex.NAME));
             return failed == 0 ? 0 : RUN_FAILED;
         } catch (SweepException | IOException e) {
             err.println("rp1.Sweep: " + e.getMessage());
@@ -126,6 +137,17 @@ public final class Sweep {
             Thread.currentThread().interrupt();
             err.println("rp1.Sweep: interrupted");
             return 1;
+        }
+    }
+
+    /** Writes the sweep's index.html (with each run's replay page if asked); a failure is told, not fatal. */
+    private static void index(Path dir, boolean pages, PrintStream err) {
+        try {
+            for (String failure : SweepIndex.write(dir, pages)) {
+                err.println("rp1.Sweep: no replay page for " + failure);
+            }
+        } catch (IOException e) {
+            err.println("rp1.Sweep: cannot write " + dir.resolve(SweepIndex.NAME) + ": " + e.getMessage());
         }
     }
 
@@ -139,44 +161,5 @@ public final class Sweep {
             words.add("--resume");
         }
         return String.join(" ", words);
-    }
-
-    /** One panel per plan, with the trails of its runs in the colour of their seed. */
-    private static List<SweepPicture.Panel> panels(Map<String, RsPlan> plans, List<Batch.Outcome> outcomes,
-                                                   List<Long> seeds) {
-        Map<Long, Integer> seedIndex = new HashMap<>();
-        for (int i = 0; i < seeds.size(); i++) {
-            seedIndex.putIfAbsent(seeds.get(i), i);
-        }
-        Map<String, List<SweepPicture.RunTrails>> runsByPlan = new HashMap<>();
-        for (Batch.Outcome o : outcomes) {
-            runsByPlan.computeIfAbsent(o.run().plan(), k -> new ArrayList<>())
-                    .add(trails(o, SweepPicture.colour(seedIndex.get(o.run().seed()))));
-        }
-        List<SweepPicture.Panel> panels = new ArrayList<>();
-        for (Map.Entry<String, RsPlan> plan : plans.entrySet()) {
-            panels.add(new SweepPicture.Panel(plan.getValue(), runsByPlan.getOrDefault(plan.getKey(), List.of())));
-        }
-        return panels;
-    }
-
-    private static SweepPicture.RunTrails trails(Batch.Outcome o, Color colour) {
-        List<double[]> pieces = new ArrayList<>();
-        for (Trail t : o.trails()) {
-            pieces.addAll(t.pieces());
-        }
-        List<double[]> ends = new ArrayList<>();
-        for (RobotResult r : o.report().robots()) {
-            ends.add(new double[] {r.x(), r.y()});
-        }
-        return new SweepPicture.RunTrails(colour, pieces, ends);
-    }
-
-    private static List<SweepPicture.Key> keys(List<Long> seeds) {
-        List<SweepPicture.Key> keys = new ArrayList<>();
-        for (int i = 0; i < seeds.size(); i++) {
-            keys.add(new SweepPicture.Key(SweepPicture.colour(i), "seed " + seeds.get(i)));
-        }
-        return keys;
     }
 }

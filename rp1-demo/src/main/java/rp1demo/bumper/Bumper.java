@@ -19,10 +19,12 @@ import rp1demo.clientzero.ClientZero;
  * golden-ratio step from one bump to the next, so the car does not bounce between two walls for
  * ever. A motion that cannot even start (halted at once, with duration 0) counts as a bump; if it
  * cannot turn either, it waits a moment and turns the other way, so simulated time always moves on.
- * It decides from its events alone, so a run is a function of the server's seed.
+ * It decides from its events alone, so a run is a function of the server's seed. Its body is named
+ * "Bumper"; its forward speed is the run's parameter {@code param.speed} (m/s) if the server's
+ * properties give one, else {@link #SPEED}, so a sweep can compare speeds ({@code --vary param.speed=0.3,0.5}).
  */
 public class Bumper extends RsClient implements RsRunnable {
-    /** Forward speed, metres per second. */
+    /** Forward speed unless {@code param.speed} says otherwise, metres per second. */
     static final double SPEED = 0.3;
     /** How long one straight run may last before it is renewed, seconds. */
     static final double STRAIGHT = 30.0;
@@ -40,6 +42,7 @@ public class Bumper extends RsClient implements RsRunnable {
     private Doing doing = Doing.WAITING;
     private int bumps;
     private double turnSign = 1.0;
+    private double speed = SPEED;
 
     /** Connects to a simulator on the network and runs until it goes away. */
     public static void main(String[] args) {
@@ -50,7 +53,12 @@ public class Bumper extends RsClient implements RsRunnable {
     @Override
     public void initialize() throws IOException {
         super.initialize();
+        String given = getRunParameter("speed");
+        if (given != null) {
+            speed = Double.parseDouble(given);
+        }
         body = ClientZero.buildWithPainter(new Color(0, 140, 60));
+        body.name = "Bumper";
         sendBodySpecification(body);
         addPlacementEventHandler(this::placed);
         addMotionHaltedEventHandler(this::halted);
@@ -100,7 +108,7 @@ public class Bumper extends RsClient implements RsRunnable {
     }
 
     private void ahead() {
-        move(Doing.AHEAD, SPEED, 0.0, STRAIGHT);
+        move(Doing.AHEAD, speed, 0.0, STRAIGHT);
     }
 
     /** Between a quarter and three quarters of a turn, a golden-ratio step further each bump. */

@@ -28,8 +28,8 @@ import rp1.Sweep;
 @Timeout(120)
 class BumperSweepTest {
     private static final Path ROOT = Paths.get(System.getProperty("rp1.root", ".."));
-    private static final String HEADER =
-            "seed,plan,robot,end_time,end_reason,exit_status,x,y,heading,distance,collisions,events,wall_seconds";
+    private static final String HEADER = "seed,plan,run,robot,start_x,start_y,start_heading,end_x,end_y,end_heading,"
+            + "end_time,distance,collisions,first_collision_time,events,status,reason,wall_seconds";
 
     @TempDir
     Path dir;
@@ -38,7 +38,7 @@ class BumperSweepTest {
         ByteArrayOutputStream text = new ByteArrayOutputStream();
         PrintStream print = new PrintStream(text, true, StandardCharsets.UTF_8);
         int status = Sweep.run(new String[] {"-p", dir.resolve("bumper.ini").toString(), "--seeds", seeds,
-            "--jobs", jobs, "--out", dir.resolve(out).toString()}, print, print, false);
+            "--jobs", jobs, "--pictures", "--out", dir.resolve(out).toString()}, print, print, false);
         assertEquals(0, status, text.toString(StandardCharsets.UTF_8));
         return Files.readAllLines(dir.resolve(out).resolve("results.csv"));
     }
@@ -46,6 +46,11 @@ class BumperSweepTest {
     /** A row without its last field, the wall-clock seconds. */
     private static String withoutWallTime(String row) {
         return row.substring(0, row.lastIndexOf(','));
+    }
+
+    /** The distance of a run: the robot's path from start to end is at least as long as the straight line. */
+    private static double straight(String[] f) {
+        return Math.hypot(Double.parseDouble(f[7]) - Double.parseDouble(f[4]), Double.parseDouble(f[8]) - Double.parseDouble(f[5]));
     }
 
     @Test
@@ -59,17 +64,22 @@ class BumperSweepTest {
         Set<String> ends = new HashSet<>();
         int collisions = 0;
         for (int i = 1; i <= 4; i++) {
-            String[] f = rows.get(i).split(",");
-            assertEquals(13, f.length, rows.get(i));
+            String[] f = rows.get(i).split(",", -1);
+            assertEquals(18, f.length, rows.get(i));
             assertEquals(Integer.toString(i), f[0], "seeds in order");
             assertEquals("contest.txt", f[1]);
-            assertEquals("20.0", f[3]);
-            assertEquals("max-simulation-time", f[4]);
-            assertEquals("0", f[5]);
-            assertTrue(Double.parseDouble(f[9]) > 0.5, "it drove: " + rows.get(i));
-            assertTrue(Long.parseLong(f[11]) > 0, "it was sent events: " + rows.get(i));
-            collisions += Integer.parseInt(f[10]);
-            ends.add(f[6] + " " + f[7]);
+            assertEquals("runs/" + i + "-contest", f[2]);
+            assertEquals("Bumper", f[3], "the robot is named after its body");
+            assertEquals("20", f[10]);
+            assertEquals("0", f[15]);
+            assertEquals("max-simulation-time", f[16]);
+            assertTrue(Double.parseDouble(f[11]) > 0.5, "it drove: " + rows.get(i));
+            assertTrue(Double.parseDouble(f[11]) >= straight(f) - 1e-3, "it went at least from start to end: " + rows.get(i));
+            assertTrue(Long.parseLong(f[14]) > 0, "it was sent events: " + rows.get(i));
+            int bumps = Integer.parseInt(f[12]);
+            assertEquals(bumps == 0, f[13].isEmpty(), "the first collision's time is there when it collided: " + rows.get(i));
+            collisions += bumps;
+            ends.add(f[7] + " " + f[8]);
         }
         assertTrue(collisions > 0, "it bumped into walls: " + rows);
         assertEquals(4, ends.size(), "each seed put it somewhere else: " + rows);

@@ -5,6 +5,11 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 
+import rp1.rossum.wire.WireCodes;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireLimits;
+import rp1.rossum.wire.WireOut;
+
 /**
  * The payload of a BODY_SPECIFICATION message (protocol.md section 8): the body's name and its parts,
  * each as id, type, type-specific geometry and parameters, name and four colours. Socket-free: it
@@ -18,12 +23,11 @@ import java.util.List;
  * wheel system the ids following the system's.
  */
 final class BodyCodec {
-    /** Marks an empty part slot on the wire; nothing follows it. */
-    static final int EMPTY_SLOT = -1;
-    static final int DIFFERENTIAL = 0;
-    private static final int ACKERMAN = 1;
-    private static final int PLAIN_WHEEL = 0;
-    private static final int CASTER = 1;
+    private static final int EMPTY_SLOT = WireCodes.EMPTY_SLOT;
+    private static final int DIFFERENTIAL = WireCodes.DIFFERENTIAL;
+    private static final int ACKERMAN = WireCodes.ACKERMAN;
+    private static final int PLAIN_WHEEL = WireCodes.PLAIN_WHEEL;
+    private static final int CASTER = WireCodes.CASTER;
 
     private BodyCodec() {
     }

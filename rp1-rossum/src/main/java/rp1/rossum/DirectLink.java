@@ -3,11 +3,13 @@ package rp1.rossum;
 import java.util.function.Consumer;
 
 import rp1.rossum.event.RsEvent;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.RequestListener;
 
 /**
  * A client and the server's end of its session in one process, without streams
  * ({@link RsConnection#connectDirect}). Requests go from the client straight into the connection's
- * dispatch; events go from the connection straight into the client's handlers, on the sending thread.
+ * listener; events go from the connection straight into the client's handlers, on the sending thread.
  * What crosses is what the wire would deliver: the body as a decoded copy ({@link BodyCodec#copy}),
  * every event as the copy the client would decode ({@link EventCodec#copy}), every request as the
  * object the server would decode ({@link RequestCodec#copying}). The client builds its requests for the
@@ -17,17 +19,17 @@ final class DirectLink {
     private final RsConnection server;
     private final RsClient client;
     private final Consumer<Throwable> onFailure;
-    private final RequestSink requests;
+    private final RequestListener requests;
 
     DirectLink(RsConnection server, RsClient client, Consumer<Throwable> onFailure) {
         this.server = server;
         this.client = client;
         this.onFailure = onFailure;
-        this.requests = RequestCodec.copying(server.dispatcher());
+        this.requests = RequestCodec.copying(server::requests);
     }
 
-    /** Where the client's requests go: copied as decoding would give them, then the server's dispatch. */
-    RequestSink requests() {
+    /** Where the client's requests go: copied as decoding would give them, then the server's listener. */
+    RequestListener requests() {
         return requests;
     }
 

@@ -18,6 +18,8 @@ import rp1.rossum.event.RsSensorEvent;
 import rp1.rossum.event.RsTargetSelectionEvent;
 import rp1.rossum.event.RsTargetSensorEvent;
 import rp1.rossum.event.RsTimeoutEvent;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /**
  * Encodes and decodes the body of an EVENT transaction (protocol.md section 7): event code, index,

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 
 import rp1.rossum.event.RsEventHandler;
+import rp1.rossum.wire.EventKey;
 
 /**
  * The client's event handlers, keyed by (event code, index) where the index is the sensor id for
@@ -16,18 +17,15 @@ import rp1.rossum.event.RsEventHandler;
 final class HandlerRegistry {
     private final Map<Long, List<RsEventHandler>> handlers = new HashMap<>();
 
-    private static long key(int code, int index) {
-        return ((long) code << 32) | (index & 0xFFFFFFFFL);
-    }
 
     /** Whether any handler is registered for the key. */
     synchronized boolean has(int code, int index) {
-        List<RsEventHandler> list = handlers.get(key(code, index));
+        List<RsEventHandler> list = handlers.get(EventKey.of(code, index));
         return list != null && !list.isEmpty();
     }
 
     synchronized void add(int code, int index, RsEventHandler handler) {
-        handlers.computeIfAbsent(key(code, index), k -> new ArrayList<>()).add(handler);
+        handlers.computeIfAbsent(EventKey.of(code, index), k -> new ArrayList<>()).add(handler);
     }
 
     /**
@@ -36,7 +34,7 @@ final class HandlerRegistry {
      * it subscribes again (protocol.md section 10).
      */
     synchronized void remove(int code, int index, RsEventHandler handler) {
-        List<RsEventHandler> list = handlers.get(key(code, index));
+        List<RsEventHandler> list = handlers.get(EventKey.of(code, index));
         if (list != null) {
             list.removeIf(handler::equals);
         }
@@ -44,12 +42,12 @@ final class HandlerRegistry {
 
     /** Removes every handler for the key (the no-argument {@code remove…EventHandler()} forms). */
     synchronized void removeAll(int code, int index) {
-        handlers.remove(key(code, index));
+        handlers.remove(EventKey.of(code, index));
     }
 
     /** The handlers for the key, in registration order, as a snapshot. */
     synchronized List<RsEventHandler> snapshot(int code, int index) {
-        List<RsEventHandler> list = handlers.get(key(code, index));
+        List<RsEventHandler> list = handlers.get(EventKey.of(code, index));
         return list == null ? Collections.emptyList() : new ArrayList<>(list);
     }
 }

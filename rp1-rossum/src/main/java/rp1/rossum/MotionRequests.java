@@ -1,5 +1,8 @@
 package rp1.rossum;
 
+import static rp1.rossum.wire.MotionLimits.NULL_LIMIT;
+import static rp1.rossum.wire.MotionLimits.STRAIGHT_LIMIT;
+
 import rp1.rossum.request.RsMotionRequest;
 
 /**
@@ -7,10 +10,6 @@ import rp1.rossum.request.RsMotionRequest;
  * request (behavior.md section 5.2) and how the client helpers aim for a goal point (section 5.6).
  */
 final class MotionRequests {
-    /** Durations, speeds and turn rates below this make a request a null motion. */
-    static final double NULL_LIMIT = 1.0e-4;
-    /** Turn rates below 0.1 degree per second make a request a straight line. */
-    static final double STRAIGHT_LIMIT = 0.1 * Math.PI / 180.0;
     /** A goal farther than this turn radius (metres) is approached in a straight line. */
     private static final double MAX_ARC_RADIUS = 1000.0;
     /** Pivots always turn at 90 degrees per second. */

@@ -4,6 +4,10 @@ import java.io.ByteArrayInputStream;
 import java.io.DataInputStream;
 import java.io.IOException;
 
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireLimits;
+import rp1.rossum.wire.WireOut;
+
 /**
  * The floor plan as the payload of a plan event (protocol.md section 9): an availability flag, the
  * caption, then every object in declaration order. Walls and obstacles travel as their polygon's

@@ -54,6 +54,10 @@ import rp1.rossum.request.RsPlanRequest;
 import rp1.rossum.request.RsSensorRequest;
 import rp1.rossum.request.RsSubscriptionRequest;
 import rp1.rossum.request.RsTargetSelectionRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.RequestListener;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /**
  * A robot client's session with the simulator: the "brain" side of RP1. Extend it (or hold one),
@@ -86,7 +90,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     public RsProperties rsProperties;
 
     private final HandlerRegistry registry = new HandlerRegistry();
-    private final RequestSink wire = new WireRequests();
+    private final RequestListener wire = new WireRequests();
     private volatile DirectLink link;
     /** Written by the event loop without taking this object's monitor, which senders may hold. */
     private volatile double simTime;
@@ -94,6 +98,8 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     /** Bodies sent so far; guarded by this client's monitor, as {@link #sendBodySpecification} is. */
     private int bodiesSent;
     private int encoderRequestIndex;
+    /** The run this client is part of: set by a server that loads it, else read from the environment. */
+    private volatile RsRunContext runContext;
 
     /**
      * A client not yet connected: {@link #initialize()} connects it, unless a server that loads it
@@ -190,6 +196,71 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      */
     public RsProperties getProperties() {
         return rsProperties;
+    }
+
+    /**
+     * Tells this client about the run it is part of. A server that loads the client calls this before
+     * {@code initialize()}; a client of one's own need not.
+     *
+     * @param context the run's parameters, seed and results
+     */
+    public void setRunContext(RsRunContext context) {
+        runContext = Objects.requireNonNull(context, "context");
+    }
+
+    /**
+     * The value of the run's parameter {@code name}: {@code param.NAME} in the properties of the
+     * server that loaded this client, or, for a client a sweep started with {@code --client}, the
+     * environment variable {@code RP1_PARAM_NAME} (docs/guide.md, "Experiments"). Any time, even
+     * before {@code initialize()}.
+     *
+     * @param name the parameter's name, without {@code param.}
+     * @return its value as written (its first word), or null if there is none, as for a client that
+     *         connected over the network by itself
+     */
+    public String getRunParameter(String name) {
+        Objects.requireNonNull(name, "name");
+        return runContext().getParameter(name);
+    }
+
+    /**
+     * The run's seed, so that a robot's own randomness is reproducible: the seed of the server that
+     * loaded this client ({@code randomSeed}, or the one it chose), or {@code RP1_SEED} for a client a
+     * sweep started with {@code --client}.
+     *
+     * @return the seed, or 0 for a client that connected over the network by itself
+     */
+    public long getRunSeed() {
+        return runContext().getSeed();
+    }
+
+    /**
+     * Reports a result of this robot's own, such as whether it reached its goal; in a sweep it
+     * becomes the column {@code result.NAME} of {@code results.csv}, and the last value reported for
+     * a name wins. A client that connected over the network by itself reports to nobody.
+     *
+     * @param name  letters, digits, {@code _}, {@code .} and {@code -}
+     * @param value a finite number
+     * @throws IllegalArgumentException naming the argument if the name or the value is not one
+     */
+    public void reportRunResult(String name, double value) {
+        if (name == null || !name.matches("[A-Za-z0-9_.-]+")) {
+            throw new IllegalArgumentException("reportRunResult: name must be letters, digits, _, . or -, got "
+                    + (name == null ? "null" : "\"" + name + "\""));
+        }
+        if (!Double.isFinite(value)) {
+            throw new IllegalArgumentException("reportRunResult: value of " + name + " must be finite, got " + value);
+        }
+        runContext().reportResult(name, value);
+    }
+
+    private RsRunContext runContext() {
+        RsRunContext c = runContext;
+        if (c == null) {
+            c = RsRunContext.fromEnvironment(System.getenv());
+            runContext = c;
+        }
+        return c;
     }
 
     /**
@@ -1044,7 +1115,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
      * the wire (a null name, an empty colour list); the direct link copies them into what the server
      * would decode, so both ends see the same thing either way.
      */
-    private RequestSink requests() {
+    private RequestListener requests() {
         DirectLink l = link;
         // After the session has ended, the wire path drops requests with a log line, whichever link it had.
         return l == null || isClosed() ? wire : l.requests();
@@ -1072,7 +1143,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
     }
 
     /** Requests encoded onto the connection's stream, each by its own encoder. */
-    private final class WireRequests implements RequestSink {
+    private final class WireRequests implements RequestListener {
         @Override
         public void timeout(double duration, int timeoutIndex) {
             sendRequest(RequestCodec.timeout(duration, timeoutIndex));
@@ -1106,6 +1177,11 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         @Override
         public void setPosition() {
             throw new IllegalStateException("the client library never sends SetPosition");
+        }
+
+        @Override
+        public void body(RsBody body) {
+            throw new IllegalStateException("a body goes by sendBodySpecification, not as a request");
         }
 
         @Override

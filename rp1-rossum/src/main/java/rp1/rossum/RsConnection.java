@@ -1,12 +1,7 @@
 package rp1.rossum;
 
-import java.io.ByteArrayInputStream;
-import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
-import java.util.HashSet;
-import java.util.Objects;
-import java.util.Set;
 import java.util.function.Consumer;
 
 import rp1.rossum.event.RsContactSensorEvent;
@@ -24,86 +19,68 @@ import rp1.rossum.event.RsRangeSensorEvent;
 import rp1.rossum.event.RsTargetSelectionEvent;
 import rp1.rossum.event.RsTargetSensorEvent;
 import rp1.rossum.event.RsTimeoutEvent;
-import rp1.rossum.request.RsActuatorControlRequest;
 import rp1.rossum.request.RsActuatorControlRequestHandler;
-import rp1.rossum.request.RsEncoderStatusRequest;
 import rp1.rossum.request.RsEncoderStatusRequestHandler;
-import rp1.rossum.request.RsHaltRequest;
 import rp1.rossum.request.RsHaltRequestHandler;
-import rp1.rossum.request.RsHeartbeatRequest;
 import rp1.rossum.request.RsHeartbeatRequestHandler;
-import rp1.rossum.request.RsMotionRequest;
 import rp1.rossum.request.RsMotionRequestHandler;
-import rp1.rossum.request.RsPainterChangeRequest;
 import rp1.rossum.request.RsPainterChangeRequestHandler;
-import rp1.rossum.request.RsPlacementRequest;
 import rp1.rossum.request.RsPlacementRequestHandler;
-import rp1.rossum.request.RsPlanRequest;
 import rp1.rossum.request.RsPlanRequestHandler;
 import rp1.rossum.request.RsPositionRequestHandler;
-import rp1.rossum.request.RsSensorRequest;
 import rp1.rossum.request.RsSensorRequestHandler;
-import rp1.rossum.request.RsSubscriptionRequest;
 import rp1.rossum.request.RsSubscriptionRequestHandler;
-import rp1.rossum.request.RsTargetSelectionRequest;
 import rp1.rossum.request.RsTargetSelectionRequestHandler;
 import rp1.rossum.request.RsTimeoutRequestHandler;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.RequestListener;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /**
- * The server's end of one client session. The client's body specification, requests and interlock
- * acknowledgements are handed to the handlers the simulator registered; the {@code send...Event}
- * methods send events to the client. A session runs in one of three modes:
+ * The server's end of one client session. The client's body specification and requests go to one
+ * {@link RequestListener} ({@link #setRequestListener}, beyond RP1 0.60), or, while none is set, to
+ * RP1 0.60's per-type handlers ({@code set...Handler}); interlock acknowledgements close the
+ * interlock; the {@code send...Event} methods send events to the client. A session runs in one of
+ * three modes:
  * <ul>
  * <li>reading a stream: {@link #run()} reads messages until the client leaves, handlers running on
  * that thread (RP1 0.60's only mode);
  * <li>feed mode, beyond RP1 0.60: a non-blocking reader hands over bytes with {@link #receive} and
- * reports their end with {@link #endOfInput()}, handlers running on the thread that hands them over;
+ * reports their end with {@link #endOfInput()}, handlers running on the thread that hands them over
+ * (the framing is {@code FeedDecoder}'s);
  * <li>direct mode, beyond RP1 0.60 ({@link #connectDirect}): a client in the same process without
  * streams, its requests handled on the thread that sends them and events handed to its handlers on
  * the thread that sends them.
  * </ul>
  *
- * <p>It also keeps the client's subscription table: which simulation-generated events (mouse clicks,
- * motion started/halted, per-sensor state changes) the client wants. The {@code send...Event} methods
- * do not consult it; the simulator does, before sending.
+ * <p>RP1 0.60's subscription table ({@link #isClientSubscribedToEvent}) is kept for 0.60 servers: it
+ * is filled from subscription requests only while no listener is set. The {@code send...Event} methods
+ * do not consult it, and this simulator does not use it (it keeps its own subscriptions).
  */
 public class RsConnection extends RsProtocol implements Runnable {
-    private static final byte[] NO_BYTES = new byte[0];
     /** Bodies received in this session (handed over by one thread at a time: the decoder or the direct client). */
     private int bodiesReceived;
-    /**
-     * Subscriptions as (event code, index) keys. RP1 0.60 kept a fixed table of indices 0..1000, so
-     * sensors whose part id exceeded 1000 could never subscribe (its process-wide part counter passed
-     * 1000 quickly with many robots in one process); a client may give a part any id, so any index is
-     * accepted.
-     */
-    private final Set<Long> subscriptions = new HashSet<>();
     /** Keeps interlock numbers in increasing order on this connection's stream. */
     private final Object eventLock = new Object();
-    private final RequestSink dispatcher = new Dispatcher();
-    /** Bytes handed to {@link #receive} that do not yet make a whole message. */
-    private final FeedBuffer feed = new FeedBuffer();
-    /** How far the message at the start of {@link #feed} has been scanned for its end. */
-    private final MessageScanner scanner = new MessageScanner();
+    /** RP1 0.60's per-type handlers and subscription table, used while no listener is set. */
+    private final ConnectionHandlers handlers = new ConnectionHandlers(this);
+    private final FeedDecoder feed = new FeedDecoder(new FeedDecoder.Messages() {
+        @Override
+        public void read(WireIn in) throws IOException {
+            readMessage(in);
+        }
+
+        @Override
+        public boolean introduced() {
+            return introduced;
+        }
+    });
+    private volatile RequestListener listener;
     private volatile boolean introduced;
     private volatile DirectLink direct;
     private RsInterlock interlock;
     private volatile int maxInterlockSent;
-
-    private volatile RsTimeoutRequestHandler timeoutHandler;
-    private volatile RsSubscriptionRequestHandler subscriptionHandler;
-    private volatile RsMotionRequestHandler motionHandler;
-    private volatile RsPositionRequestHandler positionHandler;
-    private volatile RsPlacementRequestHandler placementHandler;
-    private volatile RsHaltRequestHandler haltHandler;
-    private volatile RsSensorRequestHandler sensorHandler;
-    private volatile RsTargetSelectionRequestHandler targetSelectionHandler;
-    private volatile RsPainterChangeRequestHandler painterChangeHandler;
-    private volatile RsActuatorControlRequestHandler actuatorControlHandler;
-    private volatile RsEncoderStatusRequestHandler encoderStatusHandler;
-    private volatile RsConnectionBodyHandler bodyHandler;
-    private volatile RsPlanRequestHandler planHandler;
-    private volatile RsHeartbeatRequestHandler heartbeatHandler;
 
     /**
      * A connection not yet attached to streams: give it a socket or streams, or connect a client
@@ -181,7 +158,7 @@ public class RsConnection extends RsProtocol implements Runnable {
         int code = readHeader(in);
         switch (code) {
             case REQUEST:
-                RequestCodec.decode(in, dispatcher);
+                RequestCodec.decode(in, requests());
                 break;
             case BODY_SPECIFICATION:
                 bodyReceived(BodyCodec.decode(in));
@@ -201,16 +178,31 @@ public class RsConnection extends RsProtocol implements Runnable {
     }
 
     /**
-     * A body specification for the body handler: decoded here, or a decoded copy from a direct link.
-     * It is numbered as the client numbered it: the n-th body of this session.
+     * A body specification for the listener (or the body handler): decoded here, or a decoded copy
+     * from a direct link. It is numbered as the client numbered it: the n-th body of this session.
      */
     void bodyReceived(RsBody body) {
         body.assignID(++bodiesReceived);
         verbose("Received body specification with name " + body.getName());
-        RsConnectionBodyHandler h = bodyHandler;
-        if (h != null) {
-            h.process(body);
-        }
+        requests().body(body);
+    }
+
+    /** Where the client's requests and body go now: the listener, or while there is none the 0.60 handlers. */
+    RequestListener requests() {
+        RequestListener l = listener;
+        return l != null ? l : handlers;
+    }
+
+    /**
+     * Beyond RP1 0.60: hands every request and the body this connection receives to {@code l}, one
+     * typed call each, instead of to the per-type handlers (which, with the subscription table, are
+     * then left alone). Any thread; {@code l} is called on the thread that decodes the message (see
+     * the class comment). Null goes back to the per-type handlers.
+     *
+     * @param l the listener, or null
+     */
+    public void setRequestListener(RequestListener l) {
+        listener = l;
     }
 
     /**
@@ -232,44 +224,7 @@ public class RsConnection extends RsProtocol implements Runnable {
      *                     {@link #inputFailed}
      */
     public void receive(byte[] bytes, int offset, int length) throws IOException {
-        Objects.checkFromIndexSize(offset, length, bytes.length);
-        boolean inPlace = feed.length == 0;
-        byte[] buffer;
-        int at;
-        int end;
-        if (inPlace) {
-            buffer = bytes;
-            at = offset;
-            end = offset + length;
-        } else {
-            feed.append(bytes, offset, length);
-            buffer = feed.bytes;
-            at = 0;
-            end = feed.length;
-        }
-        int start = at;
-        try {
-            while (at < end) {
-                int size = scanner.scan(buffer, at, end, introduced);
-                if (size < 0) {
-                    if (end - at > WireLimits.MAX_MESSAGE_BYTES) {
-                        throw new RsProtocolException(truncation(buffer, at, end).getField(),
-                                "message longer than " + WireLimits.MAX_MESSAGE_BYTES + " bytes");
-                    }
-                    break;
-                }
-                int from = at;
-                // The message counts as consumed even if its handler throws.
-                at += size;
-                readMessage(new WireIn(new DataInputStream(new ByteArrayInputStream(buffer, from, size))));
-            }
-        } finally {
-            if (inPlace) {
-                feed.append(buffer, at, end - at);
-            } else {
-                feed.consume(at - start);
-            }
-        }
+        feed.receive(bytes, offset, length);
     }
 
     /**
@@ -277,20 +232,7 @@ public class RsConnection extends RsProtocol implements Runnable {
      * between messages), for a server that budgets what each client may make it hold.
      */
     public int getIncompleteMessageBytes() {
-        return feed.length;
-    }
-
-    /**
-     * Where the incomplete message in {@code b[at..end)} breaks off: decoding it as far as it goes
-     * names the field. If those bytes already break the protocol, that is thrown instead.
-     */
-    private TruncatedMessageException truncation(byte[] b, int at, int end) throws IOException {
-        try {
-            readMessage(new WireIn(new DataInputStream(new ByteArrayInputStream(b, at, end - at))));
-        } catch (TruncatedMessageException e) {
-            return e;
-        }
-        throw new IllegalStateException("an incomplete message of " + (end - at) + " bytes decoded whole");
+        return feed.incompleteBytes();
     }
 
     /**
@@ -302,8 +244,7 @@ public class RsConnection extends RsProtocol implements Runnable {
     public void endOfInput() {
         String problem;
         try {
-            receive(NO_BYTES, 0, 0);
-            problem = feed.length > 0 ? truncation(feed.bytes, 0, feed.length).getMessage() : null;
+            problem = feed.end();
         } catch (IOException e) {
             problem = e.getMessage();
         } catch (RuntimeException | Error e) {
@@ -341,23 +282,19 @@ public class RsConnection extends RsProtocol implements Runnable {
 
     /**
      * Beyond RP1 0.60: connects {@code client}, in the same process, to this connection without
-     * streams. The client's requests come to this connection's handlers as objects (equal to what
-     * decoding them from the wire would give), on the thread that sends them; its body arrives as a
-     * decoded copy, as from the wire; and each event sent here is handed to the client's handlers at
-     * once, on the sending thread, as a copy of what the client would decode. There is no handshake and
-     * no interlock: the handlers returning is the acknowledgement. If a handler throws an
-     * {@code Error}, the session ends and {@code onFailure} is told. Closing either side closes both.
+     * streams. The client's requests come to this connection's request listener (or handlers) as
+     * objects (equal to what decoding them from the wire would give), on the thread that sends them;
+     * its body arrives as a decoded copy, as from the wire; and each event sent here is handed to the
+     * client's handlers at once, on the sending thread, as a copy of what the client would decode.
+     * There is no handshake and no interlock: the handlers returning is the acknowledgement. If a
+     * handler throws an {@code Error}, the session ends and {@code onFailure} is told. Closing either
+     * side closes both.
      */
     public void connectDirect(RsClient client, Consumer<Throwable> onFailure) {
         DirectLink link = new DirectLink(this, client, onFailure);
         direct = link;
         client.attach(link);
         setClosingAction(link::shutdownClient);
-    }
-
-    /** What the client's requests are handed to: the same dispatch as for decoded requests. */
-    RequestSink dispatcher() {
-        return dispatcher;
     }
 
     /**
@@ -588,75 +525,75 @@ public class RsConnection extends RsProtocol implements Runnable {
     }
 
     /**
-     * Sets who handles the timeout requests this connection decodes (null: they are dropped). Any
+     * Sets who handles the timeout requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set. Any
      * thread; the handler is called on the thread that decodes the request (see the class comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setTimeoutRequestHandler(RsTimeoutRequestHandler h) {
-        timeoutHandler = h;
+        handlers.timeout = h;
     }
 
     /**
-     * Sets who handles the subscription requests this connection decodes (null: they are dropped).
+     * Sets who handles the subscription requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set.
      * Any thread; the handler is called on the thread that decodes the request (see the class
      * comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setSubscriptionRequestHandler(RsSubscriptionRequestHandler h) {
-        subscriptionHandler = h;
+        handlers.subscription = h;
     }
 
     /**
-     * Sets who handles the motion requests this connection decodes (null: they are dropped). Any
+     * Sets who handles the motion requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set. Any
      * thread; the handler is called on the thread that decodes the request (see the class comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setMotionRequestHandler(RsMotionRequestHandler h) {
-        motionHandler = h;
+        handlers.motion = h;
     }
 
     /**
-     * Sets who handles the position requests this connection decodes (null: they are dropped). Any
+     * Sets who handles the position requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set. Any
      * thread; the handler is called on the thread that decodes the request (see the class comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setPositionRequestHandler(RsPositionRequestHandler h) {
-        positionHandler = h;
+        handlers.position = h;
     }
 
     /**
-     * Sets who handles the placement requests this connection decodes (null: they are dropped). Any
+     * Sets who handles the placement requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set. Any
      * thread; the handler is called on the thread that decodes the request (see the class comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setPlacementRequestHandler(RsPlacementRequestHandler h) {
-        placementHandler = h;
+        handlers.placement = h;
     }
 
     /**
-     * Sets who handles the halt requests this connection decodes (null: they are dropped). Any
+     * Sets who handles the halt requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set. Any
      * thread; the handler is called on the thread that decodes the request (see the class comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setHaltRequestHandler(RsHaltRequestHandler h) {
-        haltHandler = h;
+        handlers.halt = h;
     }
 
     /**
-     * Sets who handles the sensor-status requests this connection decodes (null: they are dropped).
+     * Sets who handles the sensor-status requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set.
      * Any thread; the handler is called on the thread that decodes the request (see the class
      * comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setSensorRequestHandler(RsSensorRequestHandler h) {
-        sensorHandler = h;
+        handlers.sensor = h;
     }
 
     /**
@@ -667,7 +604,7 @@ public class RsConnection extends RsProtocol implements Runnable {
      * @param h the handler, or null
      */
     public synchronized void setTargetSelectionRequestHandler(RsTargetSelectionRequestHandler h) {
-        targetSelectionHandler = h;
+        handlers.targetSelection = h;
     }
 
     /**
@@ -678,7 +615,7 @@ public class RsConnection extends RsProtocol implements Runnable {
      * @param h the handler, or null
      */
     public synchronized void setPainterChangeRequestHandler(RsPainterChangeRequestHandler h) {
-        painterChangeHandler = h;
+        handlers.painterChange = h;
     }
 
     /**
@@ -689,7 +626,7 @@ public class RsConnection extends RsProtocol implements Runnable {
      * @param h the handler, or null
      */
     public synchronized void setActuatorControlRequestHandler(RsActuatorControlRequestHandler h) {
-        actuatorControlHandler = h;
+        handlers.actuatorControl = h;
     }
 
     /**
@@ -700,7 +637,7 @@ public class RsConnection extends RsProtocol implements Runnable {
      * @param h the handler, or null
      */
     public synchronized void setEncoderStatusRequestHandler(RsEncoderStatusRequestHandler h) {
-        encoderStatusHandler = h;
+        handlers.encoderStatus = h;
     }
 
     /**
@@ -709,168 +646,43 @@ public class RsConnection extends RsProtocol implements Runnable {
      * @param h the handler, or null
      */
     public synchronized void setBodyHandler(RsConnectionBodyHandler h) {
-        bodyHandler = h;
+        handlers.body = h;
     }
 
     /**
-     * Sets who handles the plan requests this connection decodes (null: they are dropped). Any
+     * Sets who handles the plan requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set. Any
      * thread; the handler is called on the thread that decodes the request (see the class comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setPlanRequestHandler(RsPlanRequestHandler h) {
-        planHandler = h;
+        handlers.plan = h;
     }
 
     /**
-     * Sets who handles the heartbeat requests this connection decodes (null: they are dropped). Any
+     * Sets who handles the heartbeat requests this connection decodes (null: they are dropped) while no {@link #setRequestListener request listener} is set. Any
      * thread; the handler is called on the thread that decodes the request (see the class comment).
      *
      * @param h the handler, or null
      */
     public synchronized void setHeartbeatRequestHandler(RsHeartbeatRequestHandler h) {
-        heartbeatHandler = h;
+        handlers.heartbeat = h;
     }
 
-    /** Records a subscription; event codes outside 0..13 and negative indices are ignored. */
+    /**
+     * RP1 0.60's subscription table: records a subscription; event codes outside 0..13 and negative
+     * indices are ignored. A connection fills it from subscription requests only while no request
+     * listener is set; nothing in this library reads it.
+     */
     public void setSubscriptionTableEntry(int row, int column, boolean value) {
-        if (row < 0 || row > RsEvent.EVT_MAX_CODE || column < 0) {
-            return;
-        }
-        synchronized (subscriptions) {
-            if (value) {
-                subscriptions.add(key(row, column));
-            } else {
-                subscriptions.remove(key(row, column));
-            }
-        }
+        handlers.setSubscription(row, column, value);
     }
 
-    /** Whether the client subscribed to event code {@code row} for index {@code column}. */
+    /**
+     * RP1 0.60's subscription table: whether the client subscribed to event code {@code row} for index
+     * {@code column} (see {@link #setSubscriptionTableEntry}).
+     */
     public boolean isClientSubscribedToEvent(int row, int column) {
-        synchronized (subscriptions) {
-            return subscriptions.contains(key(row, column));
-        }
-    }
-
-    private static long key(int row, int column) {
-        return ((long) row << 32) | (column & 0xFFFFFFFFL);
-    }
-
-    /** Hands decoded requests to the registered handlers; requests without a handler are dropped. */
-    private final class Dispatcher implements RequestSink {
-        @Override
-        public void timeout(double duration, int timeoutIndex) {
-            RsTimeoutRequestHandler h = timeoutHandler;
-            if (h != null) {
-                h.process(duration, timeoutIndex);
-            }
-        }
-
-        /** Timeout, position and placement events are always delivered, so their subscriptions are ignored. */
-        @Override
-        public void subscription(RsSubscriptionRequest r) {
-            int code = r.eventCode;
-            if (code != RsEvent.EVT_TIMEOUT && code != RsEvent.EVT_POSITION && code != RsEvent.EVT_PLACEMENT) {
-                setSubscriptionTableEntry(code, r.eventIndex, r.eventEnable);
-            }
-            RsSubscriptionRequestHandler h = subscriptionHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void sensorStatus(RsSensorRequest r) {
-            RsSensorRequestHandler h = sensorHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void motion(RsMotionRequest r) {
-            RsMotionRequestHandler h = motionHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void halt(RsHaltRequest r) {
-            RsHaltRequestHandler h = haltHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void position() {
-            RsPositionRequestHandler h = positionHandler;
-            if (h != null) {
-                h.process();
-            }
-        }
-
-        @Override
-        public void setPosition() {
-            verbose("RsConnection: ignoring reserved SetPosition request");
-        }
-
-        @Override
-        public void placement(RsPlacementRequest r) {
-            RsPlacementRequestHandler h = placementHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void targetSelection(RsTargetSelectionRequest r) {
-            RsTargetSelectionRequestHandler h = targetSelectionHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void plan(RsPlanRequest r) {
-            RsPlanRequestHandler h = planHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void heartbeat(RsHeartbeatRequest r) {
-            RsHeartbeatRequestHandler h = heartbeatHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void painterChange(RsPainterChangeRequest r) {
-            RsPainterChangeRequestHandler h = painterChangeHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void actuatorControl(RsActuatorControlRequest r) {
-            RsActuatorControlRequestHandler h = actuatorControlHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
-
-        @Override
-        public void encoderStatus(RsEncoderStatusRequest r) {
-            RsEncoderStatusRequestHandler h = encoderStatusHandler;
-            if (h != null) {
-                h.process(r);
-            }
-        }
+        return handlers.isSubscribed(row, column);
     }
 }

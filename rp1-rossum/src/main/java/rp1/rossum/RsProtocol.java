@@ -10,6 +10,10 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.Socket;
 
+import rp1.rossum.wire.WireCodes;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
+
 /**
  * The RP1 wire protocol shared by both ends of a session: the client ({@link RsClient}) and the
  * server's per-client connection ({@link RsConnection}). It owns the streams, the 20-byte transaction
@@ -22,64 +26,64 @@ import java.net.Socket;
  */
 public class RsProtocol implements RsLogInterface {
     /** The protocol version every header carries (docs/protocol.md section 3). */
-    protected static final int VERSION = 0;
+    protected static final int VERSION = WireCodes.VERSION;
     /** The highest transaction code. */
-    protected static final int MAX_TRANSACTION_CODE = 6;
+    protected static final int MAX_TRANSACTION_CODE = WireCodes.MAX_TRANSACTION_CODE;
     /** The number of transaction codes, for tables indexed by code. */
-    protected static final int TRANSACTION_ARRAY_SIZE = 7;
+    protected static final int TRANSACTION_ARRAY_SIZE = WireCodes.MAX_TRANSACTION_CODE + 1;
     /** Transaction code: No transaction; never sent (docs/protocol.md section 3.1). */
-    protected static final int NULL_TRANSACTION = 0;
+    protected static final int NULL_TRANSACTION = WireCodes.NULL_TRANSACTION;
     /** Transaction code: The client's opening message (docs/protocol.md section 3.1). */
-    protected static final int CONNECT = 1;
+    protected static final int CONNECT = WireCodes.CONNECT;
     /** Transaction code: The server's answer to CONNECT (docs/protocol.md section 3.1). */
-    protected static final int ACCEPT = 2;
+    protected static final int ACCEPT = WireCodes.ACCEPT;
     /** Transaction code: An event, server to client (docs/protocol.md section 3.1). */
-    protected static final int EVENT = 3;
+    protected static final int EVENT = WireCodes.EVENT;
     /** Transaction code: A request, client to server (docs/protocol.md section 3.1). */
-    protected static final int REQUEST = 4;
+    protected static final int REQUEST = WireCodes.REQUEST;
     /** Transaction code: The robot's body, client to server (docs/protocol.md section 3.1). */
-    protected static final int BODY_SPECIFICATION = 5;
+    protected static final int BODY_SPECIFICATION = WireCodes.BODY_SPECIFICATION;
     /**
      * Transaction code: An event's acknowledgement, client to server (docs/protocol.md section
      * 3.1).
      */
-    protected static final int INTERLOCK = 6;
+    protected static final int INTERLOCK = WireCodes.INTERLOCK;
 
     /** Body part type on the wire: a part with no wire encoding (docs/protocol.md section 8.2). */
-    protected static final int UNDEFINED_BODY_PART = 0;
+    protected static final int UNDEFINED_BODY_PART = WireCodes.UNDEFINED_BODY_PART;
     /** Body part type on the wire: a wheel system (docs/protocol.md section 8.2). */
-    protected static final int WHEEL_SYSTEM = 1;
+    protected static final int WHEEL_SYSTEM = WireCodes.WHEEL_SYSTEM;
     /** Body part type on the wire: a circle (docs/protocol.md section 8.2). */
-    protected static final int BODY_CIRCLE = 2;
+    protected static final int BODY_CIRCLE = WireCodes.BODY_CIRCLE;
     /** Body part type on the wire: a polygon shape (docs/protocol.md section 8.2). */
-    protected static final int BODY_SHAPE = 3;
+    protected static final int BODY_SHAPE = WireCodes.BODY_SHAPE;
     /** Body part type on the wire: a generic sensor (docs/protocol.md section 8.2). */
-    protected static final int BODY_SENSOR = 4;
+    protected static final int BODY_SENSOR = WireCodes.BODY_SENSOR;
     /** Body part type on the wire: a target sensor (docs/protocol.md section 8.2). */
-    protected static final int BODY_TARGET_SENSOR = 5;
+    protected static final int BODY_TARGET_SENSOR = WireCodes.BODY_TARGET_SENSOR;
     /** Body part type on the wire: a contact sensor (docs/protocol.md section 8.2). */
-    protected static final int BODY_CONTACT_SENSOR = 6;
+    protected static final int BODY_CONTACT_SENSOR = WireCodes.BODY_CONTACT_SENSOR;
     /** Body part type on the wire: a range sensor (docs/protocol.md section 8.2). */
-    protected static final int BODY_RANGE_SENSOR = 7;
+    protected static final int BODY_RANGE_SENSOR = WireCodes.BODY_RANGE_SENSOR;
     /** Body part type on the wire: a paint sensor (docs/protocol.md section 8.2). */
-    protected static final int BODY_PAINT_SENSOR = 8;
+    protected static final int BODY_PAINT_SENSOR = WireCodes.BODY_PAINT_SENSOR;
     /** Body part type on the wire: a painter (docs/protocol.md section 8.2). */
-    protected static final int BODY_PAINTER = 9;
+    protected static final int BODY_PAINTER = WireCodes.BODY_PAINTER;
 
     /** Plan object type on the wire: none (docs/protocol.md section 9). */
-    protected static final int UNDEFINED_PLAN_OBJECT = 0;
+    protected static final int UNDEFINED_PLAN_OBJECT = WireCodes.UNDEFINED_PLAN_OBJECT;
     /** Plan object type on the wire: a wall or obstacle (docs/protocol.md section 9). */
-    protected static final int PLAN_WALL = 1;
+    protected static final int PLAN_WALL = WireCodes.PLAN_WALL;
     /** Plan object type on the wire: a target (docs/protocol.md section 9). */
-    protected static final int PLAN_TARGET = 2;
+    protected static final int PLAN_TARGET = WireCodes.PLAN_TARGET;
     /** Plan object type on the wire: a placement (docs/protocol.md section 9). */
-    protected static final int PLAN_PLACEMENT = 3;
+    protected static final int PLAN_PLACEMENT = WireCodes.PLAN_PLACEMENT;
     /** Plan object type on the wire: a navigation node (docs/protocol.md section 9). */
-    protected static final int PLAN_NAV_NODE = 4;
+    protected static final int PLAN_NAV_NODE = WireCodes.PLAN_NAV_NODE;
     /** Plan object type on the wire: a navigation link (docs/protocol.md section 9). */
-    protected static final int PLAN_NAV_LINK = 5;
+    protected static final int PLAN_NAV_LINK = WireCodes.PLAN_NAV_LINK;
     /** Plan object type on the wire: floor paint (docs/protocol.md section 9). */
-    protected static final int PLAN_PAINT = 6;
+    protected static final int PLAN_PAINT = WireCodes.PLAN_PAINT;
 
     /** Diagnostic names of the transaction codes, indexed by code. */
     protected static final String[] transactionName = {

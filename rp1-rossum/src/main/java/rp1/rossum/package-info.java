@@ -12,12 +12,15 @@
  * types and members beyond 0.60 are there on purpose; the library's tests keep a list of them, each
  * with its reason, and fail on any other.
  *
- * <p>Internal classes, package-private and free to change: the wire format, that is the codecs of
- * a body specification ({@code BodyCodec}), of a plan event ({@code PlanCodec}), of the other events
- * ({@code EventCodec}) and of requests ({@code RequestCodec}, decoding into a {@code RequestSink}),
- * over the byte helpers {@code WireIn}, {@code WireOut} and {@code WireLimits}; the client's table of
- * event handlers ({@code HandlerRegistry}); and model helpers ({@code MotionRequests},
- * {@code BodyOutline}, {@code SweptContact}, {@code PlanLabels}, {@code PlanPolygons}).
+ * <p>Internal classes, package-private and free to change: the codecs of a body specification
+ * ({@code BodyCodec}), of a plan event ({@code PlanCodec}) and of the other events
+ * ({@code EventCodec}), which build and read the model's package-private state; a connection's
+ * feed-mode framing ({@code FeedDecoder}) and 0.60's per-type request handlers
+ * ({@code ConnectionHandlers}); the client's table of event handlers ({@code HandlerRegistry}); and
+ * model helpers ({@code MotionRequests}, {@code BodyOutline}, {@code SweptContact},
+ * {@code PlanLabels}, {@code PlanPolygons}). What the server shares with the library (byte helpers,
+ * protocol codes, the request codec and its listener) is in the internal package
+ * {@code rp1.rossum.wire}, which is not client API.
  *
  * <p>Where collisions live: the simulator's robots are {@link rp1.rossum.RsBody} objects, so
  * collisions with walls are computed here. When a motion starts, {@code RsBody} flags the contact

@@ -1,5 +1,6 @@
 package rp1.rossum;
 
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.io.BufferedReader;
@@ -36,10 +37,18 @@ import org.junit.jupiter.api.Test;
  * rp1.rossum, rp1.rossum.event or rp1.rossum.request fails the test, and so does a listed addition
  * that no longer exists. An override adds nothing: the method is listed where it is first declared. A
  * type entry allows the whole type; a member entry is Type.member or Type.method(ParameterTypes).
+ *
+ * <p>Every other package of the library must be declared internal, here and in its package comment.
+ * An internal package is not client API: RP1 0.60 has no such package, so no 0.60 program depends on
+ * it, and its public types are public only so that the server can share the wire format with the
+ * client library. Keeping them out of the three API packages is what leaves 0.60's surface as it is;
+ * a new package that is neither API nor declared internal fails the test.
  */
 class ApiAdditionsTest {
     private static final String ADDITIONS = "api-additions.txt";
     private static final List<String> PACKAGES = List.of("rp1.rossum", "rp1.rossum.event", "rp1.rossum.request");
+    /** Packages that are not client API (see the class comment); their package comment begins "Internal:". */
+    private static final List<String> INTERNAL = List.of("rp1.rossum.wire");
 
     /** The 0.60 types by qualified name, each with the keys of its members (see {@link ApiList#key}). */
     private final Map<String, Set<String>> original = new HashMap<>();
@@ -63,6 +72,34 @@ class ApiAdditionsTest {
         for (String entry : allowed.keySet()) {
             if (!found.contains(entry)) {
                 problems.add(ADDITIONS + " lists what is not a public addition (any more): " + entry);
+            }
+        }
+        if (!problems.isEmpty()) {
+            fail(String.join("\n", problems));
+        }
+    }
+
+    @Test
+    void everyOtherPackageIsDeclaredInternal() throws Exception {
+        Path root = classRoot();
+        Set<String> packages = new TreeSet<>();
+        try (Stream<Path> files = Files.walk(root)) {
+            files.filter(p -> p.toString().endsWith(".class"))
+                    .forEach(p -> packages.add(root.relativize(p.getParent()).toString().replace(p.getFileSystem().getSeparator(), ".")));
+        }
+        List<String> problems = new ArrayList<>();
+        for (String pkg : packages) {
+            if (!PACKAGES.contains(pkg) && !INTERNAL.contains(pkg)) {
+                problems.add("package " + pkg + " is neither client API nor declared internal");
+            }
+        }
+        String projectRoot = System.getProperty("rp1.root");
+        assertNotNull(projectRoot, "system property rp1.root (the project directory) is not set");
+        for (String pkg : INTERNAL) {
+            Path info = Path.of(projectRoot, "rp1-rossum", "src", "main", "java", pkg.replace('.', '/'), "package-info.java");
+            String text = Files.exists(info) ? Files.readString(info) : "";
+            if (!text.contains("/**\n * Internal:")) {
+                problems.add(info + ": an internal package's comment must begin \"Internal:\"");
             }
         }
         if (!problems.isEmpty()) {
@@ -157,7 +194,7 @@ class ApiAdditionsTest {
 
     /** The public types of the three packages (nested ones only if every enclosing type is public). */
     private static List<Class<?>> libraryTypes() throws IOException, URISyntaxException, ClassNotFoundException {
-        Path root = Path.of(RsBody.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        Path root = classRoot();
         List<Class<?>> types = new ArrayList<>();
         for (String pkg : PACKAGES) {
             Path dir = root.resolve(pkg.replace('.', '/'));
@@ -175,6 +212,11 @@ class ApiAdditionsTest {
             }
         }
         return types;
+    }
+
+    /** Where the library's classes are. */
+    private static Path classRoot() throws URISyntaxException {
+        return Path.of(RsBody.class.getProtectionDomain().getCodeSource().getLocation().toURI());
     }
 
     private static boolean isApiType(Class<?> c) {

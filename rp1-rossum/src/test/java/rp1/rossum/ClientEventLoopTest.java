@@ -16,7 +16,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-
 import rp1.rossum.event.RsContactSensorEvent;
 import rp1.rossum.event.RsContactSensorEventHandler;
 import rp1.rossum.event.RsEvent;
@@ -24,6 +23,8 @@ import rp1.rossum.event.RsMouseClickEventHandler;
 import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.event.RsTimeoutEventHandler;
 import rp1.rossum.request.RsSubscriptionRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.WireIn;
 
 /** The client's event loop as a client programmer sees it: handler order, consume, subscriptions, interlock, shutdown. */
 @Timeout(30)

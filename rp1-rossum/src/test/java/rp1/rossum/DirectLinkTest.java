@@ -19,7 +19,6 @@ import java.util.concurrent.atomic.AtomicReference;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-
 import rp1.rossum.event.RsContactSensorEvent;
 import rp1.rossum.event.RsEncoderStatusEvent;
 import rp1.rossum.event.RsEvent;
@@ -48,6 +47,10 @@ import rp1.rossum.request.RsSensorRequest;
 import rp1.rossum.request.RsSubscriptionRequest;
 import rp1.rossum.request.RsTargetSelectionRequest;
 import rp1.rossum.request.RsTimeoutRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.RequestListener;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /**
  * A client connected directly (no streams) gets exactly what it would decode from the wire, and the
@@ -231,7 +234,7 @@ class DirectLinkTest {
     }
 
     /** Hands {@code r} to the sink method for its type, as RsClient does. */
-    private static void hand(RequestSink sink, RsRequest r) {
+    private static void hand(RequestListener sink, RsRequest r) {
         switch (r.requestID) {
             case RsRequest.REQ_SUBSCRIPTION:
                 sink.subscription((RsSubscriptionRequest) r);
@@ -312,7 +315,7 @@ class DirectLinkTest {
             assertNotSame(r, copied.last, "the caller's object does not reach the server");
         }
         RecordingSink copied = new RecordingSink();
-        RequestSink copying = RequestCodec.copying(copied);
+        RequestListener copying = RequestCodec.copying(copied);
         copying.timeout(-1.5, 4);
         copying.position();
         copying.setPosition();

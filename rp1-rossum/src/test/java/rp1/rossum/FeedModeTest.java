@@ -14,12 +14,13 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-
 import rp1.rossum.request.RsMotionRequest;
 import rp1.rossum.request.RsPlacementRequest;
 import rp1.rossum.request.RsPlacementRequestHandler;
 import rp1.rossum.request.RsRequest;
 import rp1.rossum.request.RsTimeoutRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.WireOut;
 
 /**
  * A connection fed bytes by a non-blocking reader ({@link RsConnection#receive}) handles the handshake

@@ -9,10 +9,12 @@ import java.io.ByteArrayOutputStream;
 import java.util.Arrays;
 
 import org.junit.jupiter.api.Test;
-
 import rp1.rossum.event.RsPlacementEvent;
 import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.request.RsSubscriptionRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /** The worked hex examples of protocol.md section 13, byte for byte, both ways. */
 class HexExamplesTest {

@@ -10,9 +10,11 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-
 import rp1.rossum.request.RsActuatorControlRequest;
 import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.wire.MessageScanner;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.WireOut;
 
 /**
  * The scanner that finds where a client's message ends as its bytes arrive: it agrees with the

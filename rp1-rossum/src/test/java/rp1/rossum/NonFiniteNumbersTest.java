@@ -10,9 +10,11 @@ import java.io.ByteArrayOutputStream;
 import java.util.function.Consumer;
 
 import org.junit.jupiter.api.Test;
-
 import rp1.rossum.request.RsActuatorControlRequest;
 import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /**
  * Issue 18.3: NaN and the infinities in a request or a body. The server's decoder refuses them naming

@@ -42,6 +42,9 @@ import rp1.rossum.request.RsPlacementRequest;
 import rp1.rossum.request.RsSensorRequest;
 import rp1.rossum.request.RsSubscriptionRequest;
 import rp1.rossum.request.RsTargetSelectionRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /**
  * The worked examples of docs/protocol.md, by name: how our code produces each message, and what

@@ -15,9 +15,10 @@ import rp1.rossum.request.RsRequest;
 import rp1.rossum.request.RsSensorRequest;
 import rp1.rossum.request.RsSubscriptionRequest;
 import rp1.rossum.request.RsTargetSelectionRequest;
+import rp1.rossum.wire.RequestListener;
 
 /** A request sink that records what it was handed, for codec tests. */
-final class RecordingSink implements RequestSink {
+final class RecordingSink implements RequestListener {
     final List<String> calls = new ArrayList<>();
     RsRequest last;
     double timeoutDuration;
@@ -26,6 +27,11 @@ final class RecordingSink implements RequestSink {
     private void record(String call, RsRequest r) {
         calls.add(call);
         last = r;
+    }
+
+    @Override
+    public void body(RsBody body) {
+        record("body", null);
     }
 
     @Override

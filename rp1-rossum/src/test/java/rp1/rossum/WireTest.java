@@ -10,6 +10,8 @@ import java.awt.Color;
 import java.io.EOFException;
 
 import org.junit.jupiter.api.Test;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 
 /** The primitive encodings of protocol.md section 2, checked from byte arrays. */
 class WireTest {

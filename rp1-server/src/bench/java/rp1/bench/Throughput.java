@@ -11,8 +11,9 @@ import rp1.simulator.launch.RunningServer;
 /**
  * Simulated seconds per wall second with N {@link Wanderer}s in the 40 m benchmark arena: loaded
  * in-process (direct delivery), headless, interlock on, {@code simulationSpeed=max}. Run as a process
- * of its own ({@code Throughput N SECONDS}), so that its memory figures are its own: heap used after a
- * collection, and the process's resident set.
+ * of its own ({@code Throughput N SECONDS [DELIVERY [PLAN]]}), so that its memory figures are its own:
+ * heap used after a collection, and the process's resident set. PLAN replaces the arena (a path, such
+ * as a plan on a map image).
  */
 public final class Throughput {
     private static final long PLACEMENT_TIMEOUT_MILLIS = 600_000;
@@ -24,12 +25,13 @@ public final class Throughput {
         int robots = Integer.parseInt(args[0]);
         double seconds = Double.parseDouble(args[1]);
         String delivery = args.length > 2 ? args[2] : "auto";
+        String plan = args.length > 3 ? args[3] : "arena40.txt";
         StringBuilder names = new StringBuilder("dlcName=");
         for (int i = 0; i < robots; i++) {
             names.append(i == 0 ? "" : ",").append(Wanderer.class.getName());
         }
         long startup = System.nanoTime();
-        RunningServer server = BenchServer.start("floorPlanFileName=arena40.txt", "simulationSpeed=max",
+        RunningServer server = BenchServer.start("floorPlanFileName=" + plan, "simulationSpeed=max",
                 "interlockEnabled=true", "dlcEnabled=true", names.toString(), "enableNetworkClients=false",
                 "connectTimeout=600", "dlcDelivery=" + delivery);
         try {

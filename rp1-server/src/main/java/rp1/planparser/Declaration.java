@@ -1,6 +1,7 @@
 package rp1.planparser;
 
 import java.io.IOException;
+import java.util.List;
 
 import rp1.rossum.RsObject;
 
@@ -65,6 +66,16 @@ abstract class Declaration {
      * @param close the closing brace, where missing specifications are reported
      */
     abstract RsObject finish(Token close, PlanLexer lexer) throws RsParsingException;
+
+    /**
+     * The objects the declaration adds to the plan, in order: the one {@link #finish} completes, or
+     * for a {@code bitmap} the walls of its image.
+     *
+     * @param close the closing brace, where missing specifications are reported
+     */
+    List<RsObject> objects(Token close, PlanLexer lexer) throws RsParsingException {
+        return List.of(finish(close, lexer));
+    }
 
     /** The keyword that declares this type. */
     String keyword() {

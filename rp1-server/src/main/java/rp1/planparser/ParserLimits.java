@@ -19,6 +19,9 @@ final class ParserLimits {
      */
     static final double MAX_COORDINATE = 1.0e6;
 
+    /** Characters of a map_server YAML file (real ones are a few hundred). */
+    static final int MAX_MAP_FILE = 1 << 16;
+
     private ParserLimits() {
     }
 }

@@ -26,8 +26,10 @@ final class PlanParser {
             "target", PointDeclaration::target,
             "placement", PointDeclaration::placement,
             "node", PointDeclaration::node,
-            "link", LinkDeclaration::new);
-    private static final String DECLARATION_KEYWORDS = "wall, obstacle, target, placement, paint, node or link";
+            "link", LinkDeclaration::new,
+            "bitmap", BitmapDeclaration::new);
+    private static final String DECLARATION_KEYWORDS =
+            "wall, obstacle, target, placement, paint, node, link or bitmap";
 
     private final PlanLexer lexer;
     private final ValueReader values;
@@ -127,7 +129,9 @@ final class PlanParser {
         while (true) {
             Token t = lexer.nextInStatement();
             if (t.is('}')) {
-                add(d.keyword(), d.finish(t, lexer), t);
+                for (RsObject o : d.objects(t, lexer)) {
+                    add(d.keyword(), o, t);
+                }
                 return;
             }
             if (t.isIdentifier()) {
@@ -179,6 +183,10 @@ final class PlanParser {
             throw lexer.error(close, "Too many objects: a plan may declare at most " + ParserLimits.MAX_OBJECTS);
         }
         checkWithinLimit(keyword, object, close);
+        if (object.getName() != null && plan.getObjectByName(object.getName()) != null) {
+            throw lexer.error(close, "Duplicate object name " + object.getName() + ": " + keyword
+                    + " names its walls NAME_1, NAME_2, ... and an earlier object has this name");
+        }
         plan.addObject(object);
     }
 

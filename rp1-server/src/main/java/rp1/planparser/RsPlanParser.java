@@ -19,6 +19,10 @@ import rp1.rossum.RsPlan;
  * name. A plan that is malformed in any way is rejected as a whole with one {@link RsParsingException}
  * giving the file, line and column of the first error; there is never a partial plan.
  *
+ * <p>A file whose name ends in {@code .yaml} or {@code .yml} is an occupancy-grid map in ROS
+ * map_server's form instead: its image's occupied pixels become the plan's walls (docs/floorplans.md,
+ * "Plans from maps"). Plan text can take walls from such a map too, with a {@code bitmap} declaration.
+ *
  * <p>Files are decoded as UTF-8 (bytes that are not UTF-8 become U+FFFD, which like every character
  * above 127 is white space outside strings). LF, CR LF and a lone CR all end a line.
  */
@@ -34,8 +38,24 @@ public final class RsPlanParser {
      * @throws IOException if {@code in} fails
      */
     public static RsPlan parse(Reader in, String fileName) throws IOException, RsParsingException {
+        if (MapFilePlan.isMapFile(fileName)) {
+            return MapFilePlan.parse(mapText(in, fileName), fileName);
+        }
         PlanLexer lexer = new PlanLexer(new CharSource(in), fileName);
         return new PlanParser(lexer, fileName).parse();
+    }
+
+    private static String mapText(Reader in, String fileName) throws IOException, RsParsingException {
+        char[] text = new char[ParserLimits.MAX_MAP_FILE + 1];
+        int n = 0;
+        for (int r = 0; r >= 0 && n < text.length; r = in.read(text, n, text.length - n)) {
+            n += r;
+        }
+        if (n > ParserLimits.MAX_MAP_FILE) {
+            throw new RsParsingException(fileName, 1, 1, "Map file too long: a map file (image, resolution, origin,"
+                    + " thresholds) is at most " + ParserLimits.MAX_MAP_FILE + " characters");
+        }
+        return new String(text, 0, n);
     }
 
     /**

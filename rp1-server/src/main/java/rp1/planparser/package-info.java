@@ -15,5 +15,10 @@
  * byte-mask rule). Where the original crashed or hung the plan is rejected with a message instead;
  * in addition, non-simple obstacle and paint polygons and plans without objects are rejected, and
  * {@code kilometers} is accepted as units.
+ *
+ * <p>Maps: a map_server YAML file ({@code MapFilePlan}, read by {@code MapYaml}) or a {@code bitmap}
+ * declaration ({@code BitmapDeclaration}) names an image, which {@code MapSource} finds beside the file
+ * and {@code MapImageReader} (PNG through javax.imageio) or {@code PgmReader} turns into an
+ * {@code OccupancyGrid}; its occupied cells, merged into rectangles, become walls ({@code MapWalls}).
  */
 package rp1.planparser;

@@ -67,6 +67,7 @@ public final class Simulation {
     private boolean robotsPlacedSoFar;
     private volatile Runnable whenDeserted = () -> { };
     private volatile ClientBudgets clientBudgets = ClientBudgets.DEFAULTS;
+    private final ReportedResults reportedResults = new ReportedResults();
 
     public Simulation(RsPlan plan, SimulationSettings settings, RsLogInterface log) {
         this.settings = settings;
@@ -109,6 +110,16 @@ public final class Simulation {
         return inputs;
     }
 
+    /** The seed of the model's random source. */
+    public long getSeed() {
+        return settings.randomSeed;
+    }
+
+    /** The results the clients reported of their own (a sweep's {@code result.NAME} columns). */
+    public ReportedResults getReportedResults() {
+        return reportedResults;
+    }
+
     public RsLogInterface getLog() {
         return log;
     }
@@ -136,12 +147,12 @@ public final class Simulation {
             session.setWriteGate(() -> interlock.sending(session));
         }
         if (link == Link.READER) {
-            session.setAfterSubmit(this::pump);
+            session.intake().setAfterSubmit(this::pump);
         }
         connection.setProtocolShutdownHandler(() -> {
             if (!interlocked) {
-                session.connectionClosed();
-            } else if (interlock.leave(session, session::queueDeparture)) {
+                session.intake().connectionClosed();
+            } else if (interlock.leave(session, session.intake()::queueDeparture)) {
                 afterRestart.run();
             }
         });

@@ -38,11 +38,16 @@ public final class Pictures {
      * longer side, the other side just large enough for the plan plus the view's margin.
      */
     public static Dimension sizeFor(RsRectangle bounds) {
-        int inner = LONG_SIDE - ViewTransform.MARGIN;
+        return sizeFor(bounds, LONG_SIDE);
+    }
+
+    /** The size of a picture of a plan with these bounds with {@code longSide} pixels along its longer side. */
+    public static Dimension sizeFor(RsRectangle bounds, int longSide) {
+        int inner = longSide - ViewTransform.MARGIN;
         if (bounds.width >= bounds.height) {
-            return new Dimension(LONG_SIDE, (int) Math.round(inner * bounds.height / bounds.width) + ViewTransform.MARGIN);
+            return new Dimension(longSide, (int) Math.round(inner * bounds.height / bounds.width) + ViewTransform.MARGIN);
         }
-        return new Dimension((int) Math.round(inner * bounds.width / bounds.height) + ViewTransform.MARGIN, LONG_SIDE);
+        return new Dimension((int) Math.round(inner * bounds.width / bounds.height) + ViewTransform.MARGIN, longSide);
     }
 
     /** Draws {@code snapshot} into a new RGB image of the given size. */

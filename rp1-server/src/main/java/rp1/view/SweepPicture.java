@@ -17,133 +17,193 @@ import rp1.rossum.RsPlan;
 import rp1.simulator.snapshot.WorldSnapshot;
 
 /**
- * The summary picture of a sweep: each floor plan as the view draws it, with the trails of every run
- * on it over it, one colour per run and a dot where each robot ended, plans side by side, and a key
- * of the colours underneath.
+ * The summary picture of a sweep: on top a box plot per metric comparing the configurations (one
+ * colour each), below a picture per configuration and floor plan with the trails of its runs, a ring
+ * where each robot started and a dot where it ended, and a scale bar; a key of the colours and marks
+ * at the bottom.
  */
 public final class SweepPicture {
-    private static final float TRAIL_WIDTH = 2.0f;
-    private static final double END_DOT = 7.0;
-    private static final int KEY_WIDTH = 80;
+    /** Pixels along the longer side of a trails picture. */
+    private static final int PANEL_SIDE = 520;
+    private static final int PANELS_PER_ROW = 2;
+    private static final int TITLE = 20;
+    private static final float TRAIL_WIDTH = 1.6f;
+    private static final double MARK = 8.0;
     private static final int KEY_HEIGHT = 18;
 
-    /**
-     * Where one run's robots went and ended, in world metres: pieces of path {@code x0, y0, x1, y1,
-     * ...} and end points {@code x, y}.
-     */
-    public record RunTrails(Color color, List<double[]> pieces, List<double[]> ends) {
+    /** Where one run's robots went, started and ended, in world metres: pieces {@code x0, y0, x1, y1, ...}, points {@code x, y}. */
+    public record RunTrails(List<double[]> pieces, List<double[]> starts, List<double[]> ends) {
         /** Copies the lists. */
         public RunTrails {
             pieces = List.copyOf(pieces);
+            starts = List.copyOf(starts);
             ends = List.copyOf(ends);
         }
     }
 
-    /** A floor plan and the runs on it. */
-    public record Panel(RsPlan plan, List<RunTrails> runs) {
+    /** A configuration's runs on a floor plan, titled, in the configuration's colour. */
+    public record Panel(String title, Color color, RsPlan plan, List<RunTrails> runs) {
         /** Copies the list. */
         public Panel {
             runs = List.copyOf(runs);
         }
     }
 
-    /** An entry of the key under the panels. */
+    /** An entry of the key at the bottom: a configuration's colour and what it is. */
     public record Key(Color color, String label) {
     }
 
     private SweepPicture() {
     }
 
-    /** The colour of run {@code index}: hues a golden angle apart, so neighbours differ most. */
+    /** The colour of configuration {@code index}: hues a golden angle apart, so neighbours differ most. */
     public static Color colour(int index) {
         float hue = (float) ((index * 0.6180339887) % 1.0);
-        return Color.getHSBColor(hue, 0.85f, index % 2 == 0 ? 0.8f : 0.6f);
+        return Color.getHSBColor(hue, 0.85f, index % 2 == 0 ? 0.75f : 0.55f);
     }
 
-    /** Draws the panels side by side with the key underneath, and writes the picture as PNG. */
-    public static void write(Path file, List<Panel> panels, List<Key> keys) throws IOException {
-        Pictures.writePng(draw(panels, keys), file);
+    /** Draws the picture and writes it as PNG. */
+    public static void write(Path file, List<BoxPlot.Metric> metrics, List<Panel> panels, List<Key> keys)
+            throws IOException {
+        Pictures.writePng(draw(metrics, panels, keys), file);
     }
 
-    /** Draws the panels side by side with the key underneath. */
-    public static BufferedImage draw(List<Panel> panels, List<Key> keys) {
-        int width = 0;
-        int height = 0;
+    /** Draws the box plots, the trails pictures in rows under them, and the key. */
+    public static BufferedImage draw(List<BoxPlot.Metric> metrics, List<Panel> panels, List<Key> keys) {
+        int configurations = keys.size();
+        Dimension box = BoxPlot.size(configurations);
+        int perRow = Math.max(1, Math.min(metrics.size(), Math.max(2, (PANEL_SIDE * PANELS_PER_ROW) / box.width)));
+        int boxRows = (metrics.size() + perRow - 1) / perRow;
+        int panelW = 0;
+        int panelH = 0;
         for (Panel p : panels) {
-            Dimension d = Pictures.sizeFor(p.plan().getBounds());
-            width += d.width;
-            height = Math.max(height, d.height);
+            Dimension d = Pictures.sizeFor(p.plan().getBounds(), PANEL_SIDE);
+            panelW = Math.max(panelW, d.width);
+            panelH = Math.max(panelH, d.height);
         }
-        int perRow = Math.max(1, width / KEY_WIDTH);
-        int keyRows = (keys.size() + perRow - 1) / perRow;
-        BufferedImage image = new BufferedImage(width, height + keyRows * KEY_HEIGHT + (keyRows > 0 ? 6 : 0),
-                BufferedImage.TYPE_INT_RGB);
+        int panelRows = (panels.size() + PANELS_PER_ROW - 1) / PANELS_PER_ROW;
+        int width = Math.max(Math.max(perRow * box.width, Math.min(panels.size(), PANELS_PER_ROW) * panelW), 400);
+        int keyTop = boxRows * box.height + panelRows * (panelH + TITLE) + 6;
+        int height = keyTop + (keys.size() + 1) * KEY_HEIGHT + 6;
+        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
             g.setColor(Color.white);
-            g.fillRect(0, 0, image.getWidth(), image.getHeight());
-            int x = 0;
-            for (Panel p : panels) {
-                x += panel(g, p, x);
+            g.fillRect(0, 0, width, height);
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            for (int i = 0; i < metrics.size(); i++) {
+                BoxPlot.draw(g, metrics.get(i), (i % perRow) * box.width, (i / perRow) * box.height, box);
             }
-            key(g, keys, perRow, height + 4);
+            int top = boxRows * box.height;
+            for (int i = 0; i < panels.size(); i++) {
+                panel(g, panels.get(i), (i % PANELS_PER_ROW) * panelW, top + (i / PANELS_PER_ROW) * (panelH + TITLE));
+            }
+            key(g, keys, keyTop);
         } finally {
             g.dispose();
         }
         return image;
     }
 
-    /** Draws one panel with its left edge at {@code left}; returns its width. */
-    private static int panel(Graphics2D g, Panel p, int left) {
-        Dimension d = Pictures.sizeFor(p.plan().getBounds());
+    /** One trails picture with its title above it, its top left corner at ({@code left}, {@code top}). */
+    private static void panel(Graphics2D g, Panel p, int left, int top) {
+        Dimension d = Pictures.sizeFor(p.plan().getBounds(), PANEL_SIDE);
+        g.setColor(p.color());
+        g.drawString(p.title(), left + 6, top + TITLE - 6);
         BufferedImage plan = Pictures.render(new Renderer(p.plan()), WorldSnapshot.planOnly(p.plan()), d.width, d.height);
-        g.drawImage(plan, left, 0, null);
+        g.drawImage(plan, left, top + TITLE, null);
         ViewTransform view = ViewTransform.fit(p.plan().getBounds(), d.width, d.height);
-        Graphics2D t = (Graphics2D) g.create(left, 0, d.width, d.height);
+        Graphics2D t = (Graphics2D) g.create(left, top + TITLE, d.width, d.height);
         try {
-            t.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
             t.setStroke(new BasicStroke(TRAIL_WIDTH, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+            Color c = p.color();
+            Color faint = new Color(c.getRed(), c.getGreen(), c.getBlue(), Math.max(40, 200 / Math.max(1, p.runs().size() / 4)));
             for (RunTrails run : p.runs()) {
-                trails(t, run, view);
+                t.setColor(faint);
+                for (double[] piece : run.pieces()) {
+                    path(t, piece, view);
+                }
             }
+            for (RunTrails run : p.runs()) {
+                marks(t, run, view, c);
+            }
+            scale(t, p.plan(), view, d);
         } finally {
             t.dispose();
         }
-        return d.width;
     }
 
-    private static void trails(Graphics2D g, RunTrails run, ViewTransform view) {
-        Color c = run.color();
-        g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 200));
-        for (double[] piece : run.pieces()) {
-            if (piece.length < 2) {
-                continue;
-            }
-            Path2D.Double path = new Path2D.Double();
-            path.moveTo(view.pixelX(piece[0]), view.pixelY(piece[1]));
-            for (int i = 2; i + 1 < piece.length; i += 2) {
-                path.lineTo(view.pixelX(piece[i]), view.pixelY(piece[i + 1]));
-            }
-            g.draw(path);
+    private static void path(Graphics2D g, double[] piece, ViewTransform view) {
+        if (piece.length < 4) {
+            return;
         }
-        g.setColor(c);
-        for (double[] end : run.ends()) {
-            double px = view.pixelX(end[0]);
-            double py = view.pixelY(end[1]);
-            g.fill(new Ellipse2D.Double(px - END_DOT / 2, py - END_DOT / 2, END_DOT, END_DOT));
+        Path2D.Double path = new Path2D.Double();
+        path.moveTo(view.pixelX(piece[0]), view.pixelY(piece[1]));
+        for (int i = 2; i + 1 < piece.length; i += 2) {
+            path.lineTo(view.pixelX(piece[i]), view.pixelY(piece[i + 1]));
+        }
+        g.draw(path);
+    }
+
+    /** A ring where each robot started, a dot where it ended. */
+    private static void marks(Graphics2D g, RunTrails run, ViewTransform view, Color c) {
+        g.setStroke(new BasicStroke(1.5f));
+        for (double[] s : run.starts()) {
+            Ellipse2D ring = circle(view.pixelX(s[0]), view.pixelY(s[1]));
+            g.setColor(Color.white);
+            g.fill(ring);
+            g.setColor(c);
+            g.draw(ring);
+        }
+        for (double[] e : run.ends()) {
+            g.setColor(c);
+            g.fill(circle(view.pixelX(e[0]), view.pixelY(e[1])));
         }
     }
 
-    private static void key(Graphics2D g, List<Key> keys, int perRow, int top) {
-        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+    private static Ellipse2D circle(double x, double y) {
+        return new Ellipse2D.Double(x - MARK / 2, y - MARK / 2, MARK, MARK);
+    }
+
+    /** A bar of a round length (1, 2 or 5 times a power of ten metres) near a fifth of the plan's width. */
+    private static void scale(Graphics2D g, RsPlan plan, ViewTransform view, Dimension d) {
+        double target = plan.getBounds().width / 5.0;
+        double power = Math.pow(10, Math.floor(Math.log10(target)));
+        double metres = power;
+        for (double m : new double[] {2 * power, 5 * power}) {
+            if (m <= target) {
+                metres = m;
+            }
+        }
+        double pixels = Math.abs(view.pixelX(metres) - view.pixelX(0));
+        int x = 12;
+        int y = d.height - 12;
+        g.setStroke(new BasicStroke(3f));
+        g.setColor(Color.black);
+        g.drawLine(x, y, x + (int) Math.round(pixels), y);
+        g.drawLine(x, y - 4, x, y + 1);
+        g.drawLine(x + (int) Math.round(pixels), y - 4, x + (int) Math.round(pixels), y + 1);
+        String label = (metres >= 1 ? Long.toString(Math.round(metres)) : Double.toString(metres)) + " m";
+        g.drawString(label, x + (int) Math.round(pixels) + 6, y + 4);
+    }
+
+    /** The configurations' colours, then what the marks mean. */
+    private static void key(Graphics2D g, List<Key> keys, int top) {
         FontMetrics fm = g.getFontMetrics();
         for (int i = 0; i < keys.size(); i++) {
-            int x = 6 + (i % perRow) * KEY_WIDTH;
-            int y = top + (i / perRow) * KEY_HEIGHT;
+            int y = top + i * KEY_HEIGHT;
             g.setColor(keys.get(i).color());
-            g.fillRect(x, y + 3, 12, 12);
+            g.fillRect(8, y + 3, 12, 12);
             g.setColor(Color.darkGray);
-            g.drawString(keys.get(i).label(), x + 17, y + 3 + fm.getAscent() - 1);
+            g.drawString(keys.get(i).label(), 26, y + 3 + fm.getAscent() - 1);
         }
+        int y = top + keys.size() * KEY_HEIGHT;
+        g.setColor(Color.darkGray);
+        g.draw(circle(14, y + 9));
+        g.fill(circle(96, y + 9));
+        g.drawString("start", 24, y + 3 + fm.getAscent() - 1);
+        g.drawString("end", 106, y + 3 + fm.getAscent() - 1);
+        g.drawString("boxes: quartiles and median; whiskers: least and greatest", 160, y + 3 + fm.getAscent() - 1);
     }
 }

@@ -20,8 +20,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The package rules of docs/architecture.md, checked on the sources: the simulation core runs
- * headless, the world knows nothing of client sessions, and the view reaches the model only through
- * the simulation's inputs and snapshots.
+ * headless, the world knows nothing of client sessions, the world's parts do not call back into its
+ * façade, and the view reaches the model only through the simulation's inputs and snapshots.
  */
 class ArchitectureTest {
     private static final Path ROOT = Paths.get(System.getProperty("rp1.root", "."));
@@ -43,17 +43,64 @@ class ArchitectureTest {
     private static final Pattern MODEL_ACCESS = Pattern.compile(
             "\\.(?:getScheduler|getInputs|getSessions)\\(|\\.getWorld\\(\\)(?!\\.getPlan\\(\\))");
 
+    /**
+     * The one class of the plan parser that decodes map images (PNG through {@code javax.imageio}, whose
+     * pictures are {@code java.awt.image} rasters; both work headless). The rest of the parser, like the
+     * core, uses {@code java.awt.Color} only.
+     */
+    private static final String IMAGE_DECODER = "rp1-server/src/main/java/rp1/planparser/MapImageReader.java";
+
     @Test
     void theCoreUsesNoAwtOrSwingButColor() throws IOException {
-        List<String> found = violations("rp1/simulator",
-                r -> (r.isIn("java.awt") || r.isIn("javax.swing")) && !r.name().equals("java.awt.Color"));
+        List<String> found = violations("rp1/simulator", ArchitectureTest::awtBeyondColor);
         assertEquals("", String.join("\n", found), "rp1.simulator.* must run headless (java.awt.Color only)");
+    }
+
+    @Test
+    void thePlanParserDecodesImagesInOneClassAndUsesNoOtherAwtButColor() throws IOException {
+        List<String> found = violations("rp1/planparser", r -> awtBeyondColor(r) && !(r.where().startsWith(IMAGE_DECODER + ":")
+                && (r.isIn("java.awt.image") || r.isIn("javax.imageio"))));
+        assertEquals("", String.join("\n", found), "rp1.planparser uses java.awt.Color, and java.awt.image and"
+                + " javax.imageio only in " + IMAGE_DECODER);
+        assertTrue(awtBeyondColor(new References.Reference("javax.imageio.ImageIO", "X.java:1")));
+        assertTrue(awtBeyondColor(new References.Reference("java.awt.image.BufferedImage", "X.java:1")));
+    }
+
+    /** AWT, Swing or image decoding, other than {@code java.awt.Color}. */
+    private static boolean awtBeyondColor(References.Reference r) {
+        return (r.isIn("java.awt") || r.isIn("javax.swing") || r.isIn("javax.imageio")) && !r.name().equals("java.awt.Color");
     }
 
     @Test
     void theWorldDoesNotKnowSessions() throws IOException {
         List<String> found = violations("rp1/simulator/world", r -> r.isIn("rp1.simulator.session"));
         assertEquals("", String.join("\n", found), "rp1.simulator.world must not use rp1.simulator.session");
+    }
+
+    /**
+     * {@code World} is the façade over the world's parts (placements, motion, contacts, the broad
+     * phase): they answer it and never call back into it, so each can be read and changed alone.
+     * Only its listener interface names it.
+     */
+    @Test
+    void theWorldsPartsDoNotUseTheWorld() throws IOException {
+        Pattern world = Pattern.compile("\\bWorld\\b");
+        List<String> found = new ArrayList<>();
+        for (Path file : javaFiles("rp1/simulator/world")) {
+            String simple = file.getFileName().toString();
+            if (simple.equals("World.java") || simple.equals("WorldListener.java")) {
+                continue;
+            }
+            String name = name(file);
+            List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+            List<String> code = References.codeOnly(lines);
+            for (int i = 0; i < code.size(); i++) {
+                if (world.matcher(code.get(i)).find()) {
+                    found.add(name + ":" + (i + 1) + ": " + lines.get(i).trim());
+                }
+            }
+        }
+        assertEquals("", String.join("\n", found), "the world's parts must not use World");
     }
 
     @Test

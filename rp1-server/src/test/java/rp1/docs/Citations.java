@@ -28,8 +28,13 @@ final class Citations {
      */
     private static final Pattern ORIGINAL_GUIDE = Pattern.compile(
             "(?i)\\b(?:user'?s|original'?s?)\\s+guide\\b[^.;]{0,80}?\\b(?:sections?|figures?|tables?|§)\\s*\\d");
-    /** The one thing tests may read from there: the original's sample plans, skipped when absent. */
+    /** What tests may read from there: the original's sample plans, skipped when absent. */
     static final String ORIGINAL_SAMPLE_PLANS = "rp1-0.60-floorplans";
+    /**
+     * The peer simulators (not the original's material): tests read Stage's map images from its source
+     * archive, skipped when absent, and docs/performance.md says where its figures come from.
+     */
+    static final String PEERS = "peers";
     private static final Pattern HEADING = Pattern.compile("^#{2,4}\\s+" + NUMBER + "\\.?\\s");
     /** What may start a continuation line in code comments, properties files and tables. */
     private static final Pattern CONTINUATION = Pattern.compile("^\\s*(?:\\*|//|#|\\|)?\\s*");
@@ -75,15 +80,15 @@ final class Citations {
     }
 
     /**
-     * The places in {@code lines} that refer to the original's material beside the repository, other
-     * than to its sample plans, as "name:line: text".
+     * The places in {@code lines} that refer to the material beside the repository, other than to the
+     * original's sample plans or the peer simulators, as "name:line: text".
      */
     static List<String> sharedReferences(String name, List<String> lines) {
         List<String> found = new ArrayList<>();
         for (int i = 0; i < lines.size(); i++) {
             Matcher m = SHARED.matcher(lines.get(i));
             while (m.find()) {
-                if (!m.group(1).equals(ORIGINAL_SAMPLE_PLANS)) {
+                if (!m.group(1).equals(ORIGINAL_SAMPLE_PLANS) && !m.group(1).equals(PEERS)) {
                     found.add(name + ":" + (i + 1) + ": " + lines.get(i).trim());
                 }
             }

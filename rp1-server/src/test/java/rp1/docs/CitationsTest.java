@@ -106,12 +106,13 @@ class CitationsTest {
     }
 
     @Test
-    void onlyTheOriginalsSamplePlansMayBeReadFromBesideTheRepository() {
+    void onlyTheOriginalsSamplePlansAndThePeerSimulatorsMayBeReadFromBesideTheRepository() {
         String shared = ".." + "/shared/";
         List<String> lines = List.of(
                 "Path plans = root.resolve(\"" + shared + Citations.ORIGINAL_SAMPLE_PLANS + "\");",
                 "Path spec = root.resolve(\"" + shared + "spec/protocol.md\");",
-                "Path api = Paths.get(root, \"..\", \"" + "shared\", \"spec\");");
+                "Path api = Paths.get(root, \"..\", \"" + "shared\", \"spec\");",
+                "Path stage = root.resolve(\"" + shared + Citations.PEERS + "/stage-4.3.0-src.tar.gz\");");
         assertEquals(List.of("Y.java:2: " + lines.get(1), "Y.java:3: " + lines.get(2)),
                 Citations.sharedReferences("Y.java", lines));
     }

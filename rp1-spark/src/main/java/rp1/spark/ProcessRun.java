@@ -11,14 +11,18 @@ import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 
+import rp1.simulator.batch.RunEngine;
 import rp1.simulator.batch.RunReport;
+import rp1.simulator.batch.Trail;
+import rp1.simulator.batch.TrailFile;
 import rp1.simulator.batch.SweepRun;
 import rp1.simulator.launch.JavaCommand;
 
 /**
- * A run in a Java process of its own on the executor's machine, as the sweep runs one on its own
- * machine: {@code java rp1.simulator.batch.SweepRun DIR [-cp ROBOT]} with the executor's Java and
- * class path, stopped as Ctrl-C would stop it if it outlasts the timeout or the task is cancelled.
+ * A run in a Java process of its own on the executor's machine ({@code --isolation process}), as the
+ * sweep runs one on its own machine: {@code java rp1.simulator.batch.SweepRun DIR [-cp ROBOT]} with
+ * the executor's Java and class path, stopped as Ctrl-C would stop it if it outlasts the timeout or
+ * the task is cancelled.
  */
 final class ProcessRun implements LocalRun {
     private static final long serialVersionUID = 1L;
@@ -28,7 +32,7 @@ final class ProcessRun implements LocalRun {
     private static final long STOP_GRACE_SECONDS = 10;
 
     @Override
-    public void run(Path dir, List<Path> robotClassPath, double timeoutSeconds) throws IOException, InterruptedException {
+    public RunEngine.Ran run(Path dir, List<Path> robotClassPath, double timeoutSeconds) throws IOException, InterruptedException {
         List<String> args = new ArrayList<>(List.of(dir.toString()));
         if (!robotClassPath.isEmpty()) {
             args.add("-cp");
@@ -46,12 +50,21 @@ final class ProcessRun implements LocalRun {
         }
         if (!ended) {
             stop(p);
-            RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
-                    timeoutSeconds), p.exitValue()).write(dir);
-        } else if (!Files.exists(dir.resolve(RunReport.FILE))) {
+            return new RunEngine.Ran(RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s"
+                    + " of wall time", timeoutSeconds), RunReport.TIMED_OUT), List.of());
+        }
+        List<Trail> trails;
+        try {
+            trails = TrailFile.read(dir);
+        } catch (IOException e) {
+            trails = List.of();
+        }
+        try {
+            return new RunEngine.Ran(RunReport.read(dir), trails);
+        } catch (IOException e) {
             // Said as the sweep's own engine says it, so that the row is the same on every engine.
-            RunReport.failed("the run ended with status " + p.exitValue() + " and no results: "
-                    + lastLine(dir.resolve(OUTPUT)), p.exitValue()).write(dir);
+            return new RunEngine.Ran(RunReport.failed("the run ended with status " + p.exitValue() + " and no results: "
+                    + lastLine(dir.resolve(OUTPUT)), p.exitValue()), trails);
         }
     }
 

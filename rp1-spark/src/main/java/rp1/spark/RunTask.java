@@ -19,7 +19,9 @@ import java.util.stream.Stream;
 
 import org.apache.spark.SparkFiles;
 
+import rp1.simulator.batch.RunEngine;
 import rp1.simulator.batch.SweepRun;
+import rp1.simulator.batch.Trail;
 
 /**
  * One run of a sweep as a Spark task: the run's {@code run.ini} as the driver wrote it, and what the
@@ -71,10 +73,11 @@ final class RunTask implements Serializable {
             String here = propertiesText.replace(driverDir + File.separator, dir + File.separator)
                     + "\n# rp1-spark: the plan's text, written beside the run\nfloorPlanFileName=" + plan + "\n";
             Files.write(dir.resolve(SweepRun.PROPERTIES), here.getBytes(StandardCharsets.UTF_8));
-            local.run(dir, robotClassPath(), timeoutSeconds);
+            RunEngine.Ran ran = local.run(dir, robotClassPath(), timeoutSeconds);
+            ran.report().write(dir);
             Files.delete(dir.resolve(SweepRun.PROPERTIES));
             Files.delete(plan);
-            return gather(dir);
+            return gather(dir, ran.trails());
         } finally {
             delete(dir);
         }
@@ -89,7 +92,7 @@ final class RunTask implements Serializable {
         return paths;
     }
 
-    private RunFiles gather(Path dir) throws IOException {
+    private RunFiles gather(Path dir, List<Trail> trails) throws IOException {
         Map<String, byte[]> files = new LinkedHashMap<>();
         List<String> leftOut = new ArrayList<>();
         try (Stream<Path> list = Files.list(dir)) {
@@ -106,7 +109,7 @@ final class RunTask implements Serializable {
                 }
             }
         }
-        return new RunFiles(files, leftOut, InetAddress.getLocalHost().getHostName());
+        return new RunFiles(files, leftOut, InetAddress.getLocalHost().getHostName(), trails);
     }
 
     private static void delete(Path dir) {

@@ -110,7 +110,7 @@ final class SparkRuns implements RunEngine {
     }
 
     @Override
-    public RunReport run(Batch.Run run) throws IOException {
+    public Ran run(Batch.Run run) throws IOException {
         Path dir = run.dir().toAbsolutePath();
         String name = dir.getFileName().toString();
         RunTask task = new RunTask(name, Files.readString(dir.resolve(SweepRun.PROPERTIES)), dir.toString(), run.plan(),
@@ -122,10 +122,11 @@ final class SparkRuns implements RunEngine {
             files = spark.parallelize(List.of(task), 1).map(RunTask::call).collect().get(0);
         } catch (Exception e) {
             if (stopping) {
-                return RunReport.failed("stopped", ExitStatus.OK);
+                return new Ran(RunReport.failed("stopped", ExitStatus.OK), List.of());
             }
             String why = String.valueOf(e.getMessage()).lines().findFirst().orElse(e.toString());
-            return RunReport.failed("the cluster could not carry out the run: " + why, ExitStatus.STARTUP_FAILED);
+            return new Ran(RunReport.failed("the cluster could not carry out the run: " + why, ExitStatus.STARTUP_FAILED),
+                    List.of());
         }
         for (Map.Entry<String, byte[]> f : files.files.entrySet()) {
             Files.write(dir.resolve(f.getKey()), f.getValue());
@@ -141,9 +142,10 @@ final class SparkRuns implements RunEngine {
             }
         }
         try {
-            return RunReport.read(dir);
+            return new Ran(RunReport.read(dir), files.trails());
         } catch (IOException e) {
-            return RunReport.failed("the run came back without results: " + e.getMessage(), ExitStatus.STARTUP_FAILED);
+            return new Ran(RunReport.failed("the run came back without results: " + e.getMessage(),
+                    ExitStatus.STARTUP_FAILED), files.trails());
         }
     }
 

@@ -16,6 +16,7 @@ import org.apache.spark.api.java.JavaSparkContext;
 
 import rp1.Sweep;
 import rp1.simulator.batch.Interruption;
+import rp1.simulator.batch.SweepOptions;
 
 /**
  * {@code rp1 sweep ... --master URL [--keep NAMES]}: the sweep of {@link Sweep}, its runs carried out
@@ -99,7 +100,8 @@ public final class SparkSweep {
                 rest.add(Integer.toString(Math.min(1000, spark.defaultParallelism())));
             }
             return Sweep.run(rest.toArray(new String[0]), out, err, terminal, interruption,
-                    batch -> SparkRuns.open(spark, batch, keep, new ProcessRun(), Paths.get("").toAbsolutePath()));
+                    batch -> SparkRuns.open(spark, batch, keep, batch.options().isolation == SweepOptions.Isolation.PROCESS
+                            ? new ProcessRun() : new IsolatedRun(), Paths.get("").toAbsolutePath()));
         } finally {
             spark.stop();
         }

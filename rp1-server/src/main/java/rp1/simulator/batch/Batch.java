@@ -7,8 +7,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -19,8 +21,6 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
-import java.util.concurrent.TimeUnit;
-import java.util.stream.Collectors;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
@@ -30,15 +30,16 @@ import rp1.simulator.config.ResourceLocator;
 import rp1.simulator.config.ServerConfig;
 import rp1.simulator.launch.ClientClassPath;
 import rp1.simulator.launch.ExitStatus;
-import rp1.simulator.launch.JavaCommand;
 import rp1.simulator.launch.StartupException;
 
 /**
- * Runs a server's properties over several seeds and floor plans, each (seed, plan) a headless world
- * in a Java process of its own ({@link SweepRun}), N at a time, and gathers what they leave into
- * {@code results.csv}. A run is a function of its properties, plan and seed and nothing else: it gets
- * them in its own {@code run.ini} and shares no state with the others, so the same runs could be
- * spread over several machines. A run that fails is a row with its reason; the others go on.
+ * Runs a server's properties over every configuration of the varied keys ({@code --vary}), seed and
+ * floor plan, each run a headless world of its own ({@link SweepRun}), N at a time, and gathers what
+ * they leave into {@code results.csv}. A run is a function of its properties, plan and seed and
+ * nothing else: it gets them in its own {@code run.ini} and shares no state with the others, whether
+ * it runs in this process with a class loader of its own ({@link LoaderRuns}) or in a process of its
+ * own ({@link ProcessRuns}), so the same runs could be spread over several machines. A run that fails
+ * is a row with its reason; the others go on.
  *
  * <p>A run's rows are in {@code results.csv} as soon as it ends. {@link #stop()} (the sweep was
  * interrupted) asks the runs still going to stop as Ctrl-C would, so their recordings are closed,
@@ -50,10 +51,6 @@ public final class Batch {
     private static final String RECORDING = "recording.txt";
     private static final String EVENTS = "events.txt";
     private static final String PICTURE = "end.png";
-    /** What the run's process printed. */
-    private static final String OUTPUT = "output.txt";
-    /** How long a run that is asked to stop may take to close its files before it is killed. */
-    private static final long STOP_GRACE_SECONDS = 10;
     /** The results in the output folder. */
     private static final String RESULTS = "results.csv";
 
@@ -65,14 +62,22 @@ public final class Batch {
     private final SweepSpec spec;
     /** The runs finished by an earlier sweep into the same folder (--resume). */
     private final List<Outcome> kept;
-    private final Set<Process> running = ConcurrentHashMap.newKeySet();
-    private volatile boolean stopping;
+    /** The robot's class path (-cp), made absolute. */
     private final List<Path> classPath;
-    /** Carries out the runs instead of a process per run, if set ({@link #useEngine}). */
+    /** The engine --isolation asks for, or the one {@link #useEngine} gives. */
     private volatile RunEngine engine;
+    private volatile boolean stopping;
 
-    /** One (seed, plan) of the sweep and the folder it runs in. */
-    public record Run(long seed, String plan, Path dir) {
+    /**
+     * One run of the sweep and the folder it runs in.
+     *
+     * @param configuration the value of each varied key, in the order of {@code --vary}
+     */
+    public record Run(Map<String, String> configuration, long seed, String plan, Path dir) {
+        /** Copies the map. */
+        public Run {
+            configuration = Collections.unmodifiableMap(new LinkedHashMap<>(configuration));
+        }
     }
 
     /** How a run went, and the trails its robots left. */
@@ -87,7 +92,7 @@ public final class Batch {
     }
 
     private Batch(SweepOptions options, Path out, String propertiesText, Map<String, RsPlan> plans, List<Run> runs,
-                  SweepSpec spec, List<Outcome> kept, List<Path> classPath) {
+                  SweepSpec spec, List<Outcome> kept, List<Path> classPath, RunEngine engine) {
         this.options = options;
         this.out = out;
         this.propertiesText = propertiesText;
@@ -95,15 +100,18 @@ public final class Batch {
         this.runs = runs;
         this.spec = spec;
         this.kept = kept;
-        this.classPath = classPath;
+        this.classPath = List.copyOf(classPath);
+        this.engine = engine;
     }
 
     /**
-     * Checks everything that can be checked before a run starts: the properties (valid, loading a
-     * client, bounding every run), the plans (found and parsed), the output folder, and with
-     * {@code --resume} that the folder holds the same sweep (whose finished runs are then kept).
+     * Checks everything that can be checked before a run starts: the properties of every
+     * configuration (valid, loading a client or given one with {@code --client}, bounding every run),
+     * the plans (found and parsed), the output folder, and with {@code --resume} that the folder holds
+     * the same sweep (whose finished runs are then kept).
      *
      * @param workingDirectory where the properties and plans are looked for first, as the server does
+     * @param loader           where the robots' classes are found
      * @throws SweepException saying what is wrong
      */
     public static Batch prepare(SweepOptions options, Path workingDirectory, ClassLoader loader) throws SweepException {
@@ -112,10 +120,17 @@ public final class Batch {
             List<Path> classPath = ClientClassPath.resolve(options.classPath, workingDirectory);
             ResourceLocator.Found found = locator.properties(options.properties);
             Properties table = ResourceLocator.parseProperties(found);
-            ServerConfig config = ServerConfig.from(table, found.location,
-                    options.plans.isEmpty() ? null : options.plans.get(0));
-            checkRunnable(config, found.location);
-            List<String> names = options.plans.isEmpty() ? List.of(config.floorPlanFileName) : options.plans;
+            String firstPlan = options.plans.isEmpty() ? null : options.plans.get(0);
+            List<Map<String, String>> configurations = Varied.product(options.varied);
+            Set<String> robotClasses = new LinkedHashSet<>();
+            String planName = null;
+            for (Map<String, String> c : configurations) {
+                ServerConfig config = configuration(table, c, options.client, found.location, firstPlan);
+                checkRunnable(config, found.location + describe(c), options.client != null);
+                robotClasses.addAll(config.dlcNames);
+                planName = config.floorPlanFileName;
+            }
+            List<String> names = options.plans.isEmpty() ? List.of(planName) : options.plans;
             Map<String, RsPlan> plans = new LinkedHashMap<>();
             Map<String, String> planTexts = new LinkedHashMap<>();
             for (String name : names) {
@@ -128,10 +143,14 @@ public final class Batch {
                 throw new SweepException("--out " + out + ": the path must not contain white space (a property"
                         + " value ends at the first space, and each run's files are named in its properties)");
             }
-            SweepSpec spec = SweepSpec.of(found.text, planTexts, options.seeds, options.timeoutSeconds);
-            List<Run> runs = runs(options.seeds, plans.keySet(), out.resolve("runs"));
-            List<Outcome> kept = options.resume ? kept(out, spec, runs) : List.of();
-            return new Batch(options, out, found.text, plans, runs, spec, kept, classPath);
+            SweepSpec spec = SweepSpec.of(found.text, planTexts, options);
+            List<Run> runs = runs(configurations, options.seeds, plans.keySet(), out.resolve("runs"));
+            List<Outcome> kept = options.resume ? kept(out, spec, runs, options) : List.of();
+            RunEngine engine = options.isolation == SweepOptions.Isolation.PROCESS
+                    ? new ProcessRuns(options.timeoutSeconds, classPath)
+                    : new LoaderRuns(new ArrayList<>(robotClasses), ClientClassPath.loader(classPath, loader),
+                            options.timeoutSeconds);
+            return new Batch(options, out, found.text, plans, runs, spec, kept, classPath, engine);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());
         } catch (StartupException e) {
@@ -139,21 +158,40 @@ public final class Batch {
         }
     }
 
-    /** The run's folder, and the robot's class path made absolute (-cp), for {@link SweepRun}. */
-    private String[] runArguments(Run run) {
-        List<String> args = new ArrayList<>(List.of(run.dir().toAbsolutePath().toString()));
-        if (!classPath.isEmpty()) {
-            args.add("-cp");
-            args.add(classPath.stream().map(Path::toString).collect(Collectors.joining(File.pathSeparator)));
+    /** The properties with a configuration's values (and a {@code --client}'s keys) over them, checked. */
+    private static ServerConfig configuration(Properties table, Map<String, String> values, String client,
+                                              String location, String plan) throws ConfigException {
+        Properties p = new Properties();
+        p.putAll(table);
+        p.putAll(values);
+        if (client != null) {
+            p.putAll(CLIENT_KEYS);
         }
-        return args.toArray(new String[0]);
+        try {
+            return ServerConfig.from(p, location, plan);
+        } catch (ConfigException e) {
+            throw values.isEmpty() ? e : new ConfigException(e.getMessage() + " (with --vary" + describe(values) + ")");
+        }
     }
 
-    /** A run must load its robot, and must end by itself. */
-    private static void checkRunnable(ServerConfig config, String location) throws SweepException {
+    /** The keys a {@code --client} sets: its program is the robot, over the network. */
+    private static final Map<String, String> CLIENT_KEYS = Map.of("enableNetworkClients", "true",
+            "dlcEnabled", "false", "exitWhenClientsDone", "false");
+
+    private static String describe(Map<String, String> configuration) {
+        StringBuilder b = new StringBuilder();
+        configuration.forEach((k, v) -> b.append(' ').append(k).append('=').append(v));
+        return b.toString();
+    }
+
+    /** A run must load its robot (or be given one with --client), and must end by itself. */
+    private static void checkRunnable(ServerConfig config, String location, boolean client) throws SweepException {
+        if (client) {
+            return;
+        }
         if (!config.dlcEnabled) {
-            throw new SweepException(location + ": no robot is loaded: set dlcEnabled=true and dlcName=CLASS (a sweep's"
-                    + " runs have no network clients)");
+            throw new SweepException(location + ": no robot is loaded: set dlcEnabled=true and dlcName=CLASS (or give"
+                    + " the robot's program with --client)");
         }
         if (!config.exitWhenClientsDone && Double.isInfinite(config.maxSimulationTime)) {
             throw new SweepException(location + ": neither maxSimulationTime nor exitWhenClientsDone is set, so a run"
@@ -173,7 +211,8 @@ public final class Batch {
      * The runs an earlier sweep into {@code out} finished, if it was the same sweep; refused with what
      * differs if it was another.
      */
-    private static List<Outcome> kept(Path out, SweepSpec spec, List<Run> runs) throws SweepException {
+    private static List<Outcome> kept(Path out, SweepSpec spec, List<Run> runs, SweepOptions options)
+            throws SweepException {
         List<String> differences = SweepSpec.read(out).differences(spec);
         if (!differences.isEmpty()) {
             throw new SweepException("--resume: " + out + " holds another sweep (" + SweepSpec.FILE + "): "
@@ -181,14 +220,14 @@ public final class Batch {
         }
         List<ResultsCsv.Kept> rows;
         try {
-            rows = ResultsCsv.read(out.resolve(RESULTS));
+            rows = ResultsCsv.read(out.resolve(RESULTS), variedKeys(options));
         } catch (IOException e) {
             throw new SweepException("--resume: " + e.getMessage());
         }
         List<Outcome> kept = new ArrayList<>();
         for (Run run : runs) {
             for (ResultsCsv.Kept k : rows) {
-                if (k.seed() == run.seed() && k.plan().equals(run.plan())) {
+                if (k.seed() == run.seed() && k.plan().equals(run.plan()) && k.configuration().equals(run.configuration())) {
                     kept.add(new Outcome(run, k.report(), k.wallSeconds(), trails(run)));
                     break;
                 }
@@ -197,17 +236,31 @@ public final class Batch {
         return kept;
     }
 
-    /** Plan by plan, seed by seed, each in {@code runs/SEED-PLAN} (the plan's file name without .txt). */
-    private static List<Run> runs(List<Long> seeds, Set<String> plans, Path runsDir) throws SweepException {
+    private static List<String> variedKeys(SweepOptions options) {
+        List<String> keys = new ArrayList<>();
+        options.varied.forEach(v -> keys.add(v.key()));
+        return keys;
+    }
+
+    /**
+     * Configuration by configuration, plan by plan, seed by seed, each in {@code runs/SEED-PLAN} (the
+     * plan's file name without .txt), or {@code runs/cN-SEED-PLAN} for configuration N when keys vary.
+     */
+    private static List<Run> runs(List<Map<String, String>> configurations, List<Long> seeds, Set<String> plans,
+                                  Path runsDir) throws SweepException {
         List<Run> runs = new ArrayList<>();
         Set<String> stems = new HashSet<>();
         for (String plan : plans) {
-            String stem = stem(plan);
-            if (!stems.add(stem)) {
-                throw new SweepException("two of the plans are named " + stem + "; their runs' folders would be the same");
+            if (!stems.add(stem(plan))) {
+                throw new SweepException("two of the plans are named " + stem(plan) + "; their runs' folders would be the same");
             }
-            for (long seed : seeds) {
-                runs.add(new Run(seed, plan, runsDir.resolve(seed + "-" + stem)));
+        }
+        for (int c = 0; c < configurations.size(); c++) {
+            String prefix = configurations.get(c).isEmpty() ? "" : "c" + (c + 1) + "-";
+            for (String plan : plans) {
+                for (long seed : seeds) {
+                    runs.add(new Run(configurations.get(c), seed, plan, runsDir.resolve(prefix + seed + "-" + stem(plan))));
+                }
             }
         }
         return runs;
@@ -220,6 +273,21 @@ public final class Batch {
             name = name.substring(0, name.length() - 4);
         }
         return name.replaceAll("[^A-Za-z0-9._-]", "_");
+    }
+
+    /** The options the sweep was prepared with. */
+    public SweepOptions options() {
+        return options;
+    }
+
+    /** The robot's class path (-cp), made absolute; empty when its classes are the simulator's. */
+    public List<Path> robotClassPath() {
+        return classPath;
+    }
+
+    /** Carries out the runs with {@code engine} (rp1-spark's) rather than the one --isolation chose. */
+    public void useEngine(RunEngine engine) {
+        this.engine = engine;
     }
 
     /** The folder the results go to. */
@@ -237,19 +305,9 @@ public final class Batch {
         return plans;
     }
 
-    /** The robot's class path (-cp), made absolute; empty when its classes are the simulator's. */
-    public List<Path> robotClassPath() {
-        return classPath;
-    }
-
-    /** The options the sweep was prepared with. */
-    public SweepOptions options() {
-        return options;
-    }
-
-    /** Carries out the runs with {@code engine} rather than each in a process of its own. */
-    public void useEngine(RunEngine engine) {
-        this.engine = engine;
+    /** The keys varied, in the order of their columns. */
+    public List<String> variedKeys() {
+        return variedKeys(options);
     }
 
     /** The runs an earlier sweep into the same folder finished (--resume); they are not run again. */
@@ -270,7 +328,7 @@ public final class Batch {
         Map<Run, Outcome> finished = new ConcurrentHashMap<>();
         kept.forEach(o -> finished.put(o.run(), o));
         ExecutorService pool = Executors.newFixedThreadPool(options.jobs);
-        try (ResultsCsv results = ResultsCsv.start(out.resolve(RESULTS), kept)) {
+        try (ResultsCsv results = ResultsCsv.start(out.resolve(RESULTS), variedKeys(), kept)) {
             List<Future<?>> futures = new ArrayList<>();
             for (Run r : runs) {
                 if (!finished.containsKey(r)) {
@@ -300,120 +358,59 @@ public final class Batch {
                 outcomes.add(finished.get(r));
             }
         }
-        ResultsCsv.write(out.resolve(RESULTS), outcomes);
+        ResultsCsv.write(out.resolve(RESULTS), variedKeys(), outcomes);
         return new Result(outcomes, outcomes.size() < runs.size());
     }
 
     /**
      * Stops the sweep (it was interrupted): starts no more runs, and stops those going as Ctrl-C
-     * would (SIGTERM), so they close their recordings; a run still going after a grace period is
-     * killed. The runs stopped are not finished: they have no rows, and --resume runs them again.
-     * Any thread; returns at once.
+     * would, so they close their recordings (one in a process of its own still going after a grace
+     * period is killed). The runs stopped are not finished: they have no rows, and --resume runs them
+     * again. Any thread; returns at once.
      */
     public void stop() {
         stopping = true;
-        RunEngine given = engine;
-        if (given != null) {
-            given.stopAll();
-        }
-        running.forEach(Process::destroy);
-        Thread killer = new Thread(() -> {
-            try {
-                Thread.sleep(TimeUnit.SECONDS.toMillis(STOP_GRACE_SECONDS));
-            } catch (InterruptedException e) {
-                return;
-            }
-            running.forEach(Process::destroyForcibly);
-        }, "rp1-sweep-stop");
-        killer.setDaemon(true);
-        killer.start();
+        engine.stopAll();
     }
 
     /**
-     * One run in a process of its own, stopped if it takes longer than the timeout. A run that cannot
-     * even be started (its folder cannot be written, no process) is a row with the reason too. Null
-     * if the sweep was stopped before the run finished.
+     * One run, by the sweep's engine. A run that cannot even be started (its folder cannot be written,
+     * no process) is a row with the reason too. Null if the sweep was stopped before the run finished.
      */
     private Outcome execute(Run run) throws InterruptedException {
         long start = System.nanoTime();
-        RunReport report;
+        RunEngine.Ran ran;
         try {
-            report = engine == null ? runProcess(run) : runByEngine(run);
+            prepareFolder(run);
+            ran = engine.run(run);
         } catch (IOException e) {
-            report = RunReport.failed("the run could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED);
+            ran = new RunEngine.Ran(RunReport.failed("the run could not be started: " + e.getMessage(),
+                    ExitStatus.STARTUP_FAILED), List.of());
         }
-        if (report == null) {
+        RunReport report = ran.report();
+        if (stopping && (report.endReason().equals("stopped") || Double.isNaN(report.endTime()))) {
             return null;
         }
         double wall = (System.nanoTime() - start) * 1e-9;
-        return new Outcome(run, report, wall, trails(run));
+        return new Outcome(run, report, wall, ran.trails());
     }
 
-    private RunReport runByEngine(Run run) throws IOException, InterruptedException {
-        prepareFolder(run);
-        RunReport report = engine.run(run);
-        return stopping && (report.endReason().equals("stopped") || Double.isNaN(report.endTime())) ? null : report;
-    }
-
-    /** The run's folder with its properties, and nothing an earlier run left. */
+    /** The run's folder with its properties (and --client command), and nothing an earlier run left. */
     private void prepareFolder(Run run) throws IOException {
         Files.createDirectories(run.dir());
         Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
         Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
         Files.write(run.dir().resolve(SweepRun.PROPERTIES), properties(run).getBytes(StandardCharsets.UTF_8));
-    }
-
-    private RunReport runProcess(Run run) throws IOException, InterruptedException {
-        prepareFolder(run);
-        Process p = new ProcessBuilder(JavaCommand.of(List.of(), SweepRun.class.getName(), runArguments(run)))
-                .redirectErrorStream(true)
-                .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
-        running.add(p);
-        if (stopping) {
-            p.destroy();
-        }
-        boolean ended;
-        try {
-            ended = p.waitFor((long) (options.timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            stop(p);
-            throw e;
-        } finally {
-            running.remove(p);
-        }
-        if (!ended) {
-            stop(p);
-            return RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
-                    options.timeoutSeconds), p.exitValue());
-        }
-        RunReport report = report(run, p.exitValue());
-        return stopping && (report.endReason().equals("stopped") || Double.isNaN(report.endTime())) ? null : report;
-    }
-
-    /**
-     * Stops a run as Ctrl-C would, so that it closes its recording and event log (the rows worth
-     * replaying are often these); forcibly if it has not stopped within a grace period.
-     */
-    private static void stop(Process p) throws InterruptedException {
-        if (!p.isAlive()) {
-            return;
-        }
-        p.destroy();
-        if (!p.waitFor(STOP_GRACE_SECONDS, TimeUnit.SECONDS)) {
-            p.destroyForcibly();
-            p.waitFor();
+        Path command = run.dir().resolve(SweepRun.CLIENT_COMMAND);
+        if (options.client != null) {
+            Files.write(command, (options.client + "\n").getBytes(StandardCharsets.UTF_8));
+        } else {
+            Files.deleteIfExists(command);
         }
     }
 
-    private static RunReport report(Run run, int status) {
-        try {
-            return RunReport.read(run.dir());
-        } catch (IOException e) {
-            return RunReport.failed("the run ended with status " + status + " and no results: " + lastLine(run), status);
-        }
-    }
-
-    private static List<Trail> trails(Run run) {
+    /** The trails a run left in its folder; none if it left none that can be read. */
+    static List<Trail> trails(Run run) {
         try {
             return TrailFile.read(run.dir());
         } catch (IOException e) {
@@ -421,28 +418,21 @@ public final class Batch {
         }
     }
 
-    /** The last thing the run's process printed. */
-    private static String lastLine(Run run) {
-        try {
-            List<String> lines = Files.readAllLines(run.dir().resolve(OUTPUT), StandardCharsets.UTF_8);
-            for (int i = lines.size() - 1; i >= 0; i--) {
-                if (!lines.get(i).isBlank()) {
-                    return lines.get(i).trim();
-                }
-            }
-            return "it printed nothing";
-        } catch (IOException e) {
-            return "no output (" + e.getMessage() + ")";
-        }
-    }
-
     /**
-     * The user's properties with the run's own keys after them (later keys win): its seed and plan,
-     * no window, and its log, recording, event log and picture in its folder.
+     * The user's properties with the run's own keys after them (later keys win): its configuration,
+     * a {@code --client}'s keys, its seed and plan, no window, and its log, recording, event log and
+     * (with {@code --pictures}) picture in its folder; without, none, since drawing and encoding it
+     * would cost a bumper run three times what the run itself costs (a replay draws one when asked).
      */
     private String properties(Run run) {
         Path d = run.dir().toAbsolutePath();
-        return propertiesText + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + "\n"
+        StringBuilder own = new StringBuilder();
+        run.configuration().forEach((k, v) -> own.append(k).append('=').append(v).append('\n'));
+        if (options.client != null) {
+            CLIENT_KEYS.forEach((k, v) -> own.append(k).append('=').append(v).append('\n'));
+        }
+        return propertiesText + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + describe(run.configuration())
+                + "\n" + own
                 + "randomSeed=" + run.seed() + "\n"
                 + "floorPlanFileName=" + run.plan() + "\n"
                 + "enableGUI=false\n"
@@ -451,7 +441,7 @@ public final class Batch {
                 + "logToSystemOut=false\n"
                 + "recordFileName=" + d.resolve(RECORDING) + "\n"
                 + "eventLogFileName=" + d.resolve(EVENTS) + "\n"
-                + "snapshotFileName=" + d.resolve(PICTURE) + "\n"
+                + "snapshotFileName=" + (options.pictures ? d.resolve(PICTURE).toString() : "") + "\n"
                 + "snapshotInterval=0\n";
     }
 }

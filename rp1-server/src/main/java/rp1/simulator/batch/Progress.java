@@ -36,8 +36,8 @@ public final class Progress {
         if (terminal) {
             out.print("\r" + bar());
         } else {
-            out.println(String.format(Locale.ROOT, "[%d/%d] seed %d on %s: %s (%.1f s)", done, total, o.run().seed(),
-                    o.run().plan(), o.report().endReason(), o.wallSeconds()));
+            out.println(String.format(Locale.ROOT, "[%d/%d] seed %d on %s%s: %s (%.1f s)", done, total, o.run().seed(),
+                    o.run().plan(), configuration(o.run()), o.report().endReason(), o.wallSeconds()));
         }
         out.flush();
     }
@@ -61,5 +61,12 @@ public final class Progress {
     private static String duration(double seconds) {
         long s = Math.round(seconds);
         return s >= 60 ? (s / 60) + " min " + (s % 60) + " s" : s + " s";
+    }
+
+    /** The varied keys' values of a run, as " with K=V ..."; empty when nothing varies. */
+    private static String configuration(Batch.Run run) {
+        StringBuilder b = new StringBuilder();
+        run.configuration().forEach((k, v) -> b.append(b.length() == 0 ? " with " : " ").append(k).append('=').append(v));
+        return b.toString();
     }
 }

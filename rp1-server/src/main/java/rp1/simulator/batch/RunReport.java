@@ -8,7 +8,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Properties;
 
 /**
@@ -20,6 +22,8 @@ import java.util.Properties;
  * @param exitStatus the server's exit status (docs/guide.md section 4), or the process's
  */
 public record RunReport(double endTime, String endReason, int exitStatus, List<RobotResult> robots) {
+    /** The status of a run stopped because it outlived the sweep's {@code --timeout}, as timeout(1) has it. */
+    public static final int TIMED_OUT = 124;
     /** The file a run leaves in its folder. */
     public static final String FILE = "result.txt";
 
@@ -49,12 +53,14 @@ public record RunReport(double endTime, String endReason, int exitStatus, List<R
             RobotResult r = robots.get(i);
             String k = "robot." + (i + 1) + ".";
             p.setProperty(k + "name", r.name());
-            p.setProperty(k + "x", Double.toString(r.x()));
-            p.setProperty(k + "y", Double.toString(r.y()));
-            p.setProperty(k + "heading", Double.toString(r.heading()));
+            pose(p, k + "start.", r.start());
+            pose(p, k + "end.", r.end());
             p.setProperty(k + "distance", Double.toString(r.distance()));
             p.setProperty(k + "collisions", Integer.toString(r.collisions()));
+            p.setProperty(k + "first_collision_time", Double.toString(r.firstCollisionTime()));
             p.setProperty(k + "events", Long.toString(r.events()));
+            p.setProperty(k + "results", String.join(",", r.results().keySet()));
+            r.results().forEach((name, value) -> p.setProperty(k + "result." + name, Double.toString(value)));
         }
         StringWriter text = new StringWriter();
         p.store(text, null);
@@ -76,15 +82,31 @@ public record RunReport(double endTime, String endReason, int exitStatus, List<R
             int n = Integer.parseInt(required(p, "robots"));
             for (int i = 1; i <= n; i++) {
                 String k = "robot." + i + ".";
-                robots.add(new RobotResult(required(p, k + "name"), real(p, k + "x"), real(p, k + "y"),
-                        real(p, k + "heading"), real(p, k + "distance"), Integer.parseInt(required(p, k + "collisions")),
-                        Long.parseLong(required(p, k + "events"))));
+                Map<String, Double> results = new LinkedHashMap<>();
+                for (String name : required(p, k + "results").split(",")) {
+                    if (!name.isEmpty()) {
+                        results.put(name, real(p, k + "result." + name));
+                    }
+                }
+                robots.add(new RobotResult(required(p, k + "name"), pose(p, k + "start."), pose(p, k + "end."),
+                        real(p, k + "distance"), Integer.parseInt(required(p, k + "collisions")),
+                        real(p, k + "first_collision_time"), Long.parseLong(required(p, k + "events")), results));
             }
             return new RunReport(real(p, "end_time"), required(p, "end_reason"),
                     Integer.parseInt(required(p, "exit_status")), robots);
         } catch (NumberFormatException e) {
             throw new IOException(dir.resolve(FILE) + ": not a run's report: " + e.getMessage(), e);
         }
+    }
+
+    private static void pose(Properties p, String prefix, RobotResult.Pose pose) {
+        p.setProperty(prefix + "x", Double.toString(pose.x()));
+        p.setProperty(prefix + "y", Double.toString(pose.y()));
+        p.setProperty(prefix + "heading", Double.toString(pose.heading()));
+    }
+
+    private static RobotResult.Pose pose(Properties p, String prefix) throws IOException {
+        return new RobotResult.Pose(real(p, prefix + "x"), real(p, prefix + "y"), real(p, prefix + "heading"));
     }
 
     private static String required(Properties p, String key) throws IOException {

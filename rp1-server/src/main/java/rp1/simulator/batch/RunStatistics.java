@@ -17,24 +17,29 @@ import rp1.simulator.world.World;
 import rp1.simulator.world.WorldListener;
 
 /**
- * Watches a run for its results: per robot, where it is, how far it went (summed motion by motion,
- * exactly), how many of its motions ended in a collision (reported to its client or not), how many
- * events its client was sent, and its trail, sampled at every change of the world. An observer: it
+ * Watches a run for its results: per robot, where it was first placed, where it is, how far it went
+ * (summed motion by motion, exactly), how many of its motions ended in a collision (reported to its
+ * client or not) and when the first did, how many events its client was sent, and its trail, sampled
+ * at every change of the world; at the end, what its client reported of its own. An observer: it
  * changes nothing, so a run watched is the run unwatched. Called on the thread running tasks.
  */
 public final class RunStatistics implements WorldListener, Simulation.EventListener {
     /** Trail points closer than this to the previous one are left out, metres. */
     private static final double TRAIL_RESOLUTION = 0.01;
+    /** Trail points within this of the line through their neighbours are left out, metres. */
+    private static final double TRAIL_TOLERANCE = 0.002;
 
     private final Map<Integer, Watched> robots = new LinkedHashMap<>();
     private final Map<Integer, Long> eventsByClient = new HashMap<>();
+    private final Simulation simulation;
 
-    private RunStatistics() {
+    private RunStatistics(Simulation simulation) {
+        this.simulation = simulation;
     }
 
     /** Starts watching {@code simulation} (before its run starts). */
     public static RunStatistics watch(Simulation simulation) {
-        RunStatistics s = new RunStatistics();
+        RunStatistics s = new RunStatistics(simulation);
         simulation.getWorld().addListener(s);
         simulation.addEventListener(s);
         return s;
@@ -43,7 +48,7 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
     @Override
     public synchronized void worldChanged(World world, double simTime) {
         for (Robot r : world.getRobots()) {
-            robots.computeIfAbsent(r.getNumber(), n -> new Watched(r.getLabel())).see(r);
+            robots.computeIfAbsent(r.getNumber(), n -> new Watched(n, r.getLabel())).see(r);
         }
     }
 
@@ -56,25 +61,33 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         if (r == null) {
             return;
         }
-        Watched w = robots.computeIfAbsent(r.getNumber(), n -> new Watched(r.getLabel()));
+        Watched w = robots.computeIfAbsent(r.getNumber(), n -> new Watched(n, r.getLabel()));
         w.client = session.getNumber();
         if (event instanceof RsMotionHaltedEvent h && h.causeOfHalt == RsMotionHaltedEvent.HALTED_ON_COLLISION) {
-            w.collisions++;
+            if (w.collisions++ == 0) {
+                w.firstCollision = h.simTime;
+            }
         }
     }
 
     /**
-     * The robots at the end, in the order they joined; call once the run has stopped, with the world
-     * it ran (robots still in it are looked at a last time; those that left keep what was last seen).
+     * The robots at {@code endTime}, in the order they joined; call once the run has stopped, with
+     * the simulated time it stopped at (robots still in the world are looked at a last time, and
+     * their pose and distance are taken at that time; those that left keep what was last seen).
      */
-    public synchronized List<RobotResult> results(World world) {
+    public synchronized List<RobotResult> results(double endTime) {
+        World world = simulation.getWorld();
         worldChanged(world, Double.NaN);
         List<String> names = names();
         List<RobotResult> out = new ArrayList<>();
         int i = 0;
         for (Watched w : robots.values()) {
-            out.add(new RobotResult(names.get(i++), w.x, w.y, w.heading, w.distance(), w.collisions,
-                    eventsByClient.getOrDefault(w.client, 0L)));
+            boolean present = world.getRobots().stream().anyMatch(r -> r.getNumber() == w.number);
+            RobotResult.Pose end = w.start == RobotResult.Pose.NONE ? RobotResult.Pose.NONE
+                    : present ? w.poseAt(endTime) : new RobotResult.Pose(w.x, w.y, w.heading);
+            out.add(new RobotResult(names.get(i++), w.start, end, present ? w.distanceAt(endTime) : w.distance(),
+                    w.collisions, w.firstCollision, eventsByClient.getOrDefault(w.client, 0L),
+                    simulation.getReportedResults().of(w.client)));
         }
         return out;
     }
@@ -101,7 +114,7 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         for (Watched w : robots.values()) {
             List<double[]> pieces = new ArrayList<>();
             for (List<Double> p : w.pieces) {
-                pieces.add(Trail.piece(p));
+                pieces.add(Trail.simplified(Trail.piece(p), TRAIL_TOLERANCE));
             }
             out.add(new Trail(names.get(i++), pieces));
         }
@@ -110,9 +123,12 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
 
     /** What is known of one robot. */
     private static final class Watched {
+        final int number;
         final String label;
         int client;
         int collisions;
+        double firstCollision = Double.NaN;
+        RobotResult.Pose start = RobotResult.Pose.NONE;
         double x;
         double y;
         double heading;
@@ -122,7 +138,8 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         int series = Integer.MIN_VALUE;
         final List<List<Double>> pieces = new ArrayList<>();
 
-        Watched(String label) {
+        Watched(int number, String label) {
+            this.number = number;
             this.label = label;
         }
 
@@ -140,6 +157,10 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
             y = pose.m23;
             heading = pose.getTheta();
             if (r.isPlaced()) {
+                if (start == RobotResult.Pose.NONE) {
+                    RsTransform first = m.transform0 != null ? m.transform0 : pose;
+                    start = new RobotResult.Pose(first.m13, first.m23, first.getTheta());
+                }
                 sample(m.getContinuitySeriesID());
             }
         }
@@ -159,6 +180,23 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
 
         double distance() {
             return travelled + covered(motion);
+        }
+
+        /** The distance at {@code t}, on or after the last change seen: the current motion taken to {@code t}. */
+        double distanceAt(double t) {
+            if (motion == null || !(t >= motion.time0)) {
+                return distance();
+            }
+            return travelled + Math.abs(motion.getVelocity()) * (Math.min(t, motion.time1) - motion.time0);
+        }
+
+        /** The pose at {@code t} along the current motion (the last pose seen if there is none). */
+        RobotResult.Pose poseAt(double t) {
+            if (motion == null || Double.isNaN(t)) {
+                return new RobotResult.Pose(x, y, heading);
+            }
+            RsTransform p = motion.getPoseAtTime(t);
+            return new RobotResult.Pose(p.m13, p.m23, p.getTheta());
         }
 
         /** How far the body origin went along {@code m} so far (its speed is constant along it). */

@@ -11,8 +11,9 @@ import java.util.Set;
 import rp1.simulator.config.ServerArguments;
 
 /**
- * A sweep's command line: {@code -p FILE.ini --seeds 1-16 [--plans a.txt,b.txt] [--jobs N]
- * [--timeout S] [-cp PATH] --out DIR [--resume]}. Immutable.
+ * A sweep's command line: {@code -p FILE.ini --seeds 1-16 [--vary KEY=V1,V2 ...] [--plans a.txt,b.txt]
+ * [--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] [--pictures] [-cp PATH] --out DIR
+ * [--resume]}. Immutable.
  */
 public final class SweepOptions {
     /** The most runs one sweep may have. */
@@ -22,20 +23,38 @@ public final class SweepOptions {
 
     /** What the command line may hold. */
     public static final String USAGE = String.join("\n",
-            "usage: java rp1.Sweep -p PROPERTIES --seeds SEEDS --out DIR [--plans A.txt,B.txt] [--jobs N] [--timeout S]",
+            "usage: java rp1.Sweep -p PROPERTIES --seeds SEEDS --out DIR [--vary KEY=VALUES ...] [--plans A.txt,B.txt]",
+            "                      [--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] [--pictures]",
             "                      [--resume]",
             "  -p PROPERTIES  the server's properties: a file, or Properties/NAME on the class path; they must",
             "                 load the robot (dlcEnabled, dlcName) and bound every run (maxSimulationTime or",
             "                 exitWhenClientsDone)",
             "  --seeds SEEDS  the seeds to run: 1-16, or a list such as 1,2,5-8 (0 or more)",
+            "  --vary KEY=V1,V2,...  or  --vary KEY=FROM:TO:STEP",
+            "                 runs every value of a properties key (param.NAME: a parameter of the robot);",
+            "                 several --vary make the full product, each configuration over every seed and plan",
             "  --plans LIST   floor plans, separated by commas (default: the properties' floorPlanFileName)",
             "  --jobs N       runs at a time (default: the number of cores)",
             "  --timeout S    wall-clock seconds after which a run is stopped and counted as failed (default 600)",
+            "  --isolation I  loader (default): runs share this Java process, each with its own class loader for",
+            "                 the robot's classes; process: each run in a Java process of its own (for robots",
+            "                 with static state shared between instances, System.exit or threads of their own)",
+            "  --client CMD   runs the program CMD (split at spaces) as each run's robot instead of a loaded one:",
+            "                 it connects to the port in RP1_PORT and finds RP1_SEED, RP1_PARAM_NAME, RP1_RESULTS",
+            "  --pictures     also leave a picture of each run's end, end.png, in its folder (slower)",
             "  --out DIR      where results.csv, summary.png and runs/SEED-PLAN/ go (created if need be)",
             "  -cp PATH       where the robot's classes (dlcName) are, besides the simulator's own (also --classpath)",
             "  --resume       go on with the sweep in DIR that was interrupted: run only the runs it has no",
             "                 results for (the other options must be those it was started with)",
             "  -h, --help     print this and exit");
+
+    /** How the runs are kept apart. */
+    public enum Isolation {
+        /** In this process, each run with its own class loader for the robot's classes and its own world. */
+        LOADER,
+        /** Each run in a Java process of its own. */
+        PROCESS
+    }
 
     public final String properties;
     public final List<Long> seeds;
@@ -48,9 +67,17 @@ public final class SweepOptions {
     public final boolean resume;
     /** The entries of {@code -cp}, as written (relative to the working directory). */
     public final List<String> classPath;
+    /** The keys varied, in the order given (the first varies slowest). */
+    public final List<Varied> varied;
+    public final Isolation isolation;
+    /** The program that is each run's robot ({@code --client}), or null for the loaded one. */
+    public final String client;
+    /** Each run leaves a picture of its end ({@code --pictures}). */
+    public final boolean pictures;
 
     private SweepOptions(String properties, List<Long> seeds, List<String> plans, int jobs, double timeoutSeconds,
-                         Path out, boolean resume, List<String> classPath) {
+                         Path out, boolean resume, List<Varied> varied, Isolation isolation, String client,
+                         boolean pictures, List<String> classPath) {
         this.properties = properties;
         this.seeds = Collections.unmodifiableList(seeds);
         this.plans = Collections.unmodifiableList(plans);
@@ -59,6 +86,19 @@ public final class SweepOptions {
         this.out = out;
         this.resume = resume;
         this.classPath = Collections.unmodifiableList(classPath);
+        this.varied = List.copyOf(varied);
+        this.isolation = isolation;
+        this.client = client;
+        this.pictures = pictures;
+    }
+
+    /** How many configurations the varied keys make: the product of their numbers of values. */
+    public long configurations() {
+        long n = 1;
+        for (Varied v : varied) {
+            n = Math.min((long) MAX_RUNS + 1, n * v.values().size());
+        }
+        return n;
     }
 
     /**
@@ -76,6 +116,10 @@ public final class SweepOptions {
         Path out = null;
         boolean resume = false;
         List<String> classPath = new ArrayList<>();
+        List<Varied> varied = new ArrayList<>();
+        Isolation isolation = Isolation.LOADER;
+        String client = null;
+        boolean pictures = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -90,16 +134,47 @@ public final class SweepOptions {
                 case "--out" -> out = Paths.get(value(args, ++i, a));
                 case "--resume" -> resume = true;
                 case "-cp", "-classpath", "--classpath" -> classPath.addAll(ServerArguments.entries(value(args, ++i, a)));
+                case "--vary" -> varied.add(vary(varied, value(args, ++i, a)));
+                case "--isolation" -> isolation = isolation(value(args, ++i, a));
+                case "--client" -> client = client(value(args, ++i, a));
+                case "--pictures" -> pictures = true;
                 default -> throw new IllegalArgumentException((a.startsWith("-") ? "unknown option " : "unexpected argument ") + a);
             }
         }
         if (properties == null || seeds == null || out == null) {
             throw new IllegalArgumentException("-p, --seeds and --out are required");
         }
-        if (seeds.size() * (long) Math.max(1, plans.size()) > MAX_RUNS) {
+        SweepOptions options = new SweepOptions(properties, seeds, plans, jobs, timeout, out, resume, varied, isolation,
+                client, pictures, classPath);
+        if (seeds.size() * (long) Math.max(1, plans.size()) * options.configurations() > MAX_RUNS) {
             throw new IllegalArgumentException("more than " + MAX_RUNS + " runs");
         }
-        return new SweepOptions(properties, seeds, plans, jobs, timeout, out, resume, classPath);
+        return options;
+    }
+
+    private static Varied vary(List<Varied> before, String spec) {
+        Varied v = Varied.parse(spec);
+        for (Varied b : before) {
+            if (b.key().equals(v.key())) {
+                throw new IllegalArgumentException("--vary " + v.key() + " is given twice");
+            }
+        }
+        return v;
+    }
+
+    private static Isolation isolation(String v) {
+        return switch (v) {
+            case "loader" -> Isolation.LOADER;
+            case "process" -> Isolation.PROCESS;
+            default -> throw new IllegalArgumentException("--isolation needs loader or process, got " + v);
+        };
+    }
+
+    private static String client(String command) {
+        if (command.isBlank()) {
+            throw new IllegalArgumentException("--client needs a command");
+        }
+        return command.trim();
     }
 
     private static String value(String[] args, int i, String option) {

@@ -1,17 +1,25 @@
 package rp1.simulator.batch;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
-import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.OptionalInt;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.function.Consumer;
 
 import rp1.simulator.Simulation;
+import rp1.simulator.config.ServerArguments;
+import rp1.simulator.launch.ClientClassPath;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.LaunchOptions;
 import rp1.simulator.launch.RunningServer;
@@ -20,29 +28,35 @@ import rp1.simulator.launch.StartupException;
 import rp1.simulator.launch.ViewHook;
 
 /**
- * One run of a sweep, in a process of its own: {@code java rp1.simulator.batch.SweepRun DIR [-cp PATH]}
- * starts the server with {@code DIR/run.ini} (and the robot's class path) (which the sweep wrote: the user's properties with the run's
- * seed, plan and output files), waits until it stops, and leaves {@link RunReport#FILE} and
- * {@link TrailFile#FILE} in DIR. The process's exit status is the server's.
+ * One run of a sweep: starts the server with {@code DIR/run.ini} (which the sweep wrote: the user's
+ * properties with the run's configuration, seed, plan and output files), with the robot's classes
+ * from the class loader given, and, if the sweep has a {@code --client}, the client's program
+ * ({@link ExternalClient}); waits until it stops, and leaves {@link RunReport#FILE} and
+ * {@link TrailFile#FILE} in DIR. The sweep runs it in its own process ({@code --isolation loader}) or
+ * as {@code java rp1.simulator.batch.SweepRun DIR [-cp PATH]} ({@code --isolation process}; {@code -cp}
+ * names the robot's classes, as {@code rp1 sweep -cp} did), whose exit status is the server's.
  */
 public final class SweepRun {
     /** The properties a sweep writes into each run's folder. */
     public static final String PROPERTIES = "run.ini";
     /** The server's log in each run's folder. */
     public static final String LOG = "server.log";
+    /** The {@code --client} command, in the run's folder when the sweep has one. */
+    static final String CLIENT_COMMAND = "client-command.txt";
+    /** How often a run with a {@code --client} looks whether the client's program is still going. */
+    private static final long POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(50);
     /** How long stopping waits for a server that is starting. */
     private static final long START_WAIT_SECONDS = 30;
 
     private final Path dir;
-    /** The server's arguments beyond -p: the robot's class path, if any. */
-    private final List<String> serverArguments;
+    private final ClassLoader loader;
     private RunStatistics statistics;
     private List<RobotResult> robots = List.of();
     private double endTime = Double.NaN;
 
-    private SweepRun(Path dir, List<String> serverArguments) {
+    SweepRun(Path dir, ClassLoader loader) {
         this.dir = dir;
-        this.serverArguments = serverArguments;
+        this.loader = loader;
     }
 
     /** Runs the run in the folder given; the process exits with the server's status. */
@@ -51,34 +65,124 @@ public final class SweepRun {
             System.err.println("usage: java rp1.simulator.batch.SweepRun RUN-FOLDER [-cp PATH] (started by rp1.Sweep)");
             System.exit(ExitStatus.STARTUP_FAILED);
         }
-        List<String> rest = Arrays.asList(args).subList(1, args.length);
-        System.exit(new SweepRun(Paths.get(args[0]).toAbsolutePath(), rest).run());
-    }
-
-    private int run() {
         // Stopped by the sweep (a timeout, the sweep interrupted: SIGTERM), even while it starts, the
         // run still closes its recording and event log before the process ends.
         CompletableFuture<RunningServer> started = new CompletableFuture<>();
         Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnceStarted(started), "stop the run"));
-        RunningServer server = null;
+        ClassLoader robots = SweepRun.class.getClassLoader();
+        if (args.length == 3) {
+            try {
+                robots = ClientClassPath.loader(ClientClassPath.resolve(
+                        ServerArguments.entries(args[2]), Paths.get("").toAbsolutePath()), robots);
+            } catch (StartupException e) {
+                System.err.println("rp1.simulator.batch.SweepRun: -cp: " + e.getMessage());
+                System.exit(ExitStatus.STARTUP_FAILED);
+            }
+        }
+        SweepRun run = new SweepRun(Paths.get(args[0]).toAbsolutePath(), robots);
+        RunReport report;
         try {
-            List<String> args = new ArrayList<>(List.of("-p", dir.resolve(PROPERTIES).toString()));
-            args.addAll(serverArguments);
-            server = ServerLauncher.start(args.toArray(new String[0]),
-                    Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch));
+            report = run.run(started::complete, Double.POSITIVE_INFINITY);
+        } catch (InterruptedException e) {
+            report = RunReport.failed("interrupted", ExitStatus.OK);
+        } finally {
+            started.complete(null);
+        }
+        System.exit(report.exitStatus());
+    }
+
+    /**
+     * Runs the run here and leaves its report and trails in its folder.
+     *
+     * @param started        told the server once it has started (to stop it from elsewhere)
+     * @param timeoutSeconds wall seconds after which the run is stopped and counted as failed
+     * @return how it went
+     */
+    RunReport run(Consumer<RunningServer> started, double timeoutSeconds) throws InterruptedException {
+        String client;
+        try {
+            client = clientCommand(dir);
+        } catch (IOException e) {
+            return report(RunReport.failed("cannot read " + CLIENT_COMMAND + ": " + e.getMessage(), ExitStatus.STARTUP_FAILED));
+        }
+        RunningServer server;
+        try {
+            server = ServerLauncher.start(new String[] {"-p", dir.resolve(PROPERTIES).toString()},
+                    Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch)
+                            .withClassLoader(loader));
         } catch (StartupException e) {
             return report(RunReport.failed("startup failed: " + e.getMessage(), e.getExitStatus()));
-        } finally {
-            started.complete(server);
         }
-        int status;
+        started.accept(server);
+        ExternalClient external = null;
         try {
-            status = server.awaitExit();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return ExitStatus.OK;
+            if (client != null) {
+                external = ExternalClient.start(client, dir, server);
+            }
+            long deadline = Double.isInfinite(timeoutSeconds) ? Long.MAX_VALUE
+                    : System.nanoTime() + (long) (timeoutSeconds * 1e9);
+            OptionalInt status = awaitExit(server, external, deadline);
+            if (status.isEmpty() && external != null && external.hasExited()) {
+                server.stop();
+                return report(RunReport.failed("client failed: " + external.describeExit(), ExitStatus.CLIENT_FAILED));
+            }
+            if (status.isEmpty()) {
+                server.stop();
+                return report(RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of"
+                        + " wall time", timeoutSeconds), RunReport.TIMED_OUT));
+            }
+            List<RobotResult> results = external == null ? robots : withResults(robots, external.finish());
+            return report(new RunReport(endTime, server.getStopReason(), status.getAsInt(), results));
+        } catch (IOException e) {
+            server.stop();
+            return report(RunReport.failed("the client could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED));
+        } finally {
+            if (external != null) {
+                external.stop();
+            }
         }
-        return report(new RunReport(endTime, server.getStopReason(), status, robots));
+    }
+
+    /**
+     * Waits until the server stops by itself; empty if the deadline passes first, or if the run's
+     * client program has ended and the server has not stopped {@link ExternalClient#GRACE_SECONDS}
+     * later (it left without a robot on the floor, which a run waiting for it would wait for forever).
+     */
+    private static OptionalInt awaitExit(RunningServer server, ExternalClient external, long deadline)
+            throws InterruptedException {
+        long clientGone = Long.MAX_VALUE;
+        while (System.nanoTime() < deadline) {
+            long wait = Math.min(deadline - System.nanoTime(), external == null ? Long.MAX_VALUE : POLL_NANOS);
+            OptionalInt status = server.awaitExit(wait, TimeUnit.NANOSECONDS);
+            if (status.isPresent()) {
+                return status;
+            }
+            if (external != null && external.hasExited()) {
+                clientGone = Math.min(clientGone, System.nanoTime());
+                if (System.nanoTime() - clientGone > TimeUnit.SECONDS.toNanos(ExternalClient.GRACE_SECONDS)) {
+                    return OptionalInt.empty();
+                }
+            }
+        }
+        return OptionalInt.empty();
+    }
+
+    /** The {@code --client} command the run's folder holds, or null. */
+    private static String clientCommand(Path dir) throws IOException {
+        Path file = dir.resolve(CLIENT_COMMAND);
+        return Files.exists(file) ? Files.readString(file, StandardCharsets.UTF_8).trim() : null;
+    }
+
+    /** The results an external client reported belong to its run: each robot gets them. */
+    private static List<RobotResult> withResults(List<RobotResult> robots, Map<String, Double> reported) {
+        List<RobotResult> out = new ArrayList<>();
+        for (RobotResult r : robots) {
+            Map<String, Double> results = new LinkedHashMap<>(r.results());
+            results.putAll(reported);
+            out.add(new RobotResult(r.name(), r.start(), r.end(), r.distance(), r.collisions(), r.firstCollisionTime(),
+                    r.events(), results));
+        }
+        return out;
     }
 
     /** The shutdown hook: waits until the server has started (if it is starting), then stops it cleanly. */
@@ -105,12 +209,17 @@ public final class SweepRun {
         AutoCloseable view = ViewHook.standard().open(context);
         return () -> {
             endTime = simulation.getScheduler().recordedTime();
-            robots = statistics.results(simulation.getWorld());
+            robots = statistics.results(endTime);
             view.close();
         };
     }
 
-    private int report(RunReport report) {
+    /** The robots' trails, once {@link #run} has returned (none if the server never started). */
+    List<Trail> trails() {
+        return statistics == null ? List.of() : statistics.trails();
+    }
+
+    private RunReport report(RunReport report) {
         try {
             report.write(dir);
             if (statistics != null) {
@@ -120,6 +229,6 @@ public final class SweepRun {
             System.err.println("rp1.simulator.batch.SweepRun: cannot write the run's results in " + dir + ": "
                     + e.getMessage());
         }
-        return report.exitStatus();
+        return report;
     }
 }

@@ -16,7 +16,8 @@ import java.util.stream.Collectors;
 
 /**
  * What decides a sweep's runs and their rows: the properties' text, the floor plans (names and text),
- * the seeds and the timeout; not {@code --jobs}, which only decides how many run at once. Kept in the
+ * the seeds, the varied keys and their values, the {@code --client} and the timeout; not {@code --jobs}
+ * or {@code --isolation}, which only decide how the runs are carried out. Kept in the
  * output folder as {@code sweep.ini}, so that {@code --resume} goes on only with the sweep that
  * folder holds. Immutable.
  */
@@ -40,21 +41,25 @@ final class SweepSpec {
         names.put("plans", "the floor plans (--plans)");
         names.put("plans.sha256", "the floor plans' text");
         names.put("seeds", "the seeds (--seeds)");
+        names.put("vary", "the varied keys (--vary)");
+        names.put("client", "the client program (--client)");
         names.put("timeout", "the timeout (--timeout)");
         return names;
     }
 
-    /** The specification of a sweep of {@code seeds} with these properties and plans (name to text). */
-    static SweepSpec of(String propertiesText, Map<String, String> plans, List<Long> seeds, double timeout) {
+    /** The specification of the sweep {@code options} ask for, with these properties and plans (name to text). */
+    static SweepSpec of(String propertiesText, Map<String, String> plans, SweepOptions options) {
         Map<String, String> v = new LinkedHashMap<>();
-        v.put(FORMAT, "1");
+        v.put(FORMAT, "2");
         v.put("properties.sha256", sha256(propertiesText));
         v.put("plans", String.join(",", plans.keySet()));
         StringBuilder planTexts = new StringBuilder();
         plans.forEach((name, text) -> planTexts.append(name).append('\0').append(text).append('\0'));
         v.put("plans.sha256", sha256(planTexts.toString()));
-        v.put("seeds", seeds.stream().map(String::valueOf).collect(Collectors.joining(",")));
-        v.put("timeout", Double.toString(timeout));
+        v.put("seeds", options.seeds.stream().map(String::valueOf).collect(Collectors.joining(",")));
+        v.put("vary", options.varied.stream().map(Varied::toString).collect(Collectors.joining(" ")));
+        v.put("client", options.client == null ? "" : options.client);
+        v.put("timeout", Double.toString(options.timeoutSeconds));
         return new SweepSpec(v);
     }
 

@@ -1,5 +1,7 @@
 package rp1.simulator.batch;
 
+import java.util.ArrayDeque;
+import java.util.Deque;
 import java.util.List;
 
 /**
@@ -10,6 +12,65 @@ public record Trail(String robot, List<double[]> pieces) {
     /** Copies the list (the arrays are not changed once a trail is made). */
     public Trail {
         pieces = List.copyOf(pieces);
+    }
+
+    /**
+     * {@code xy} ({@code x0, y0, x1, y1, ...}) without the points that lie within {@code tolerance} of
+     * the line through the points kept on either side (Douglas and Peucker): a robot that drives
+     * straight for a metre leaves two points instead of a hundred, and the picture is the same.
+     */
+    static double[] simplified(double[] xy, double tolerance) {
+        int n = xy.length / 2;
+        if (n < 3) {
+            return xy;
+        }
+        boolean[] keep = new boolean[n];
+        keep[0] = true;
+        keep[n - 1] = true;
+        Deque<int[]> spans = new ArrayDeque<>();
+        spans.push(new int[] {0, n - 1});
+        while (!spans.isEmpty()) {
+            int[] span = spans.pop();
+            int farthest = -1;
+            double most = tolerance;
+            for (int i = span[0] + 1; i < span[1]; i++) {
+                double d = distance(xy, i, span[0], span[1]);
+                if (d > most) {
+                    most = d;
+                    farthest = i;
+                }
+            }
+            if (farthest >= 0) {
+                keep[farthest] = true;
+                spans.push(new int[] {span[0], farthest});
+                spans.push(new int[] {farthest, span[1]});
+            }
+        }
+        int kept = 0;
+        for (boolean k : keep) {
+            kept += k ? 1 : 0;
+        }
+        double[] out = new double[2 * kept];
+        for (int i = 0, j = 0; i < n; i++) {
+            if (keep[i]) {
+                out[j++] = xy[2 * i];
+                out[j++] = xy[2 * i + 1];
+            }
+        }
+        return out;
+    }
+
+    /** How far point {@code i} is from the segment between points {@code a} and {@code b}. */
+    private static double distance(double[] xy, int i, int a, int b) {
+        double ax = xy[2 * a];
+        double ay = xy[2 * a + 1];
+        double dx = xy[2 * b] - ax;
+        double dy = xy[2 * b + 1] - ay;
+        double px = xy[2 * i] - ax;
+        double py = xy[2 * i + 1] - ay;
+        double length2 = dx * dx + dy * dy;
+        double t = length2 == 0 ? 0 : Math.max(0, Math.min(1, (px * dx + py * dy) / length2));
+        return Math.hypot(px - t * dx, py - t * dy);
     }
 
     /** A piece of path from its coordinates {@code x0, y0, x1, y1, ...}. */

@@ -1,6 +1,5 @@
 package rp1.simulator.batch;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
@@ -21,19 +20,37 @@ public final class TrailFile {
     private TrailFile() {
     }
 
-    /** Writes {@code trails} into {@code dir}. */
+    /** Writes {@code trails} into {@code dir}, coordinates to 0.1 mm (the points are a centimetre apart). */
     public static void write(Path dir, List<Trail> trails) throws IOException {
-        try (Writer out = new BufferedWriter(Files.newBufferedWriter(dir.resolve(FILE), StandardCharsets.UTF_8))) {
-            for (Trail t : trails) {
-                out.write("robot " + t.robot().replace('\n', ' ') + "\n");
-                for (double[] piece : t.pieces()) {
-                    out.write("piece\n");
-                    for (int i = 0; i + 1 < piece.length; i += 2) {
-                        out.write(piece[i] + " " + piece[i + 1] + "\n");
-                    }
+        StringBuilder b = new StringBuilder();
+        for (Trail t : trails) {
+            b.append("robot ").append(t.robot().replace('\n', ' ')).append('\n');
+            for (double[] piece : t.pieces()) {
+                b.append("piece\n");
+                for (int i = 0; i + 1 < piece.length; i += 2) {
+                    tenthsOfMillimetres(b, piece[i]).append(' ');
+                    tenthsOfMillimetres(b, piece[i + 1]).append('\n');
                 }
             }
         }
+        try (Writer out = Files.newBufferedWriter(dir.resolve(FILE), StandardCharsets.UTF_8)) {
+            out.append(b);
+        }
+    }
+
+    /** {@code metres} with four decimals, without the cost of general number formatting (a run has thousands). */
+    private static StringBuilder tenthsOfMillimetres(StringBuilder b, double metres) {
+        long n = Math.round(metres * 1e4);
+        if (n < 0) {
+            b.append('-');
+            n = -n;
+        }
+        long fraction = n % 10_000;
+        b.append(n / 10_000).append('.');
+        for (long digit = 1000; digit > 1 && fraction < digit; digit /= 10) {
+            b.append('0');
+        }
+        return b.append(fraction);
     }
 
     /**

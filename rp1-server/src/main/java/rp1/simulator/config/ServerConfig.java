@@ -10,6 +10,7 @@ import java.util.OptionalLong;
 import java.util.Properties;
 import java.util.Set;
 import java.util.SortedMap;
+import java.util.TreeMap;
 
 import rp1.simulator.session.ClientBudgets;
 
@@ -20,7 +21,8 @@ import rp1.simulator.session.ClientBudgets;
  * {@code randomSeed}, {@code exitWhenClientsDone}, {@code maxSimulationTime}, {@code connectTimeout},
  * {@code clientQueueLimit}, {@code clientOutputBudget}, {@code clientTimeoutBudget},
  * {@code clientSubscriptionBudget}, {@code clientMessageBudget}, {@code snapshotFileName}, {@code snapshotInterval}, {@code robotsInteract},
- * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName} and {@code eventLogFileName}
+ * {@code waitForClients}, {@code dlcDelivery}, {@code recordFileName}, {@code eventLogFileName} and
+ * {@code viewPort}
  * (docs/properties.md). Immutable; built
  * by {@link #from}, which validates every value and refuses a key it does not know.
  */
@@ -40,7 +42,8 @@ public final class ServerConfig {
             "bindAddress", "randomSeed", "exitWhenClientsDone", "maxSimulationTime", "connectTimeout",
             "clientQueueLimit", "snapshotFileName", "snapshotInterval", "robotsInteract", "waitForClients",
             "dlcDelivery", "recordFileName", "eventLogFileName",
-            "clientOutputBudget", "clientTimeoutBudget", "clientSubscriptionBudget", "clientMessageBudget");
+            "clientOutputBudget", "clientTimeoutBudget", "clientSubscriptionBudget", "clientMessageBudget",
+            "viewPort");
 
     /**
      * Keys an RP1 0.60 server file may hold that this server does not read, and why: accepted with a
@@ -50,11 +53,14 @@ public final class ServerConfig {
     static final Map<String, String> UNUSED_0_60_KEYS = Map.of(
             "hostName", "a client key (rossum.ini); the server listens on bindAddress and port");
 
+    /** The prefix of the robot's parameters among the keys. */
+    public static final String PARAMETER_PREFIX = "param.";
+
     /**
-     * Prefixes under which any key is accepted, for families of keys read elsewhere than here (robot
-     * parameters such as {@code param.NAME} would be declared by adding {@code "param."}). None yet.
+     * Prefixes under which any key is accepted: the robot's parameters ({@code param.NAME}), which
+     * belong to the robot, not to the server.
      */
-    static final List<String> KEY_FAMILIES = List.of();
+    static final List<String> KEY_FAMILIES = List.of(PARAMETER_PREFIX);
 
     private static final PropertyKeys DECLARED = new PropertyKeys(KEYS, UNUSED_0_60_KEYS, KEY_FAMILIES);
 
@@ -131,6 +137,13 @@ public final class ServerConfig {
     public final String recordFileName;
     /** Where to write every event sent to a client, one line each (docs/recording.md), or null. */
     public final String eventLogFileName;
+    /** The port a browser watches the run on ({@code viewPort}, docs/properties.md); 0: no live view. */
+    public final int viewPort;
+    /**
+     * The robot's parameters: every {@code param.NAME} key, by NAME, with its value's first word.
+     * Loaded clients read them with {@code RsClient.getRunParameter}; a sweep varies them.
+     */
+    public final SortedMap<String, String> parameters;
     /** The properties as given (values unparsed), sorted by key: a recording keeps them. */
     public final SortedMap<String, String> given;
     /** What was accepted but is worth saying (a key RP1 0.60 had that this server ignores), one line each. */
@@ -178,7 +191,9 @@ public final class ServerConfig {
         dlcDelivery = Delivery.valueOf(r.choice("dlcDelivery", "auto", "auto", "direct", "pipes").toUpperCase(Locale.ROOT));
         recordFileName = r.string("recordFileName");
         eventLogFileName = r.string("eventLogFileName");
+        viewPort = r.integer("viewPort", 0, 0, 65535);
         given = r.given();
+        parameters = parameters(r);
         checkConsistency(r);
     }
 
@@ -231,6 +246,30 @@ public final class ServerConfig {
      */
     public static ServerConfig fromRecorded(Properties table, String source) throws ConfigException {
         return new ServerConfig(new PropertyReader(table, source, DECLARED), null, false);
+    }
+
+    /**
+     * The {@code param.NAME} keys: accepted whatever NAME is, since they belong to the robot, not to
+     * the server (docs/properties.md).
+     */
+    private static SortedMap<String, String> parameters(PropertyReader r) throws ConfigException {
+        SortedMap<String, String> parameters = new TreeMap<>();
+        for (String key : r.given().keySet()) {
+            if (key.startsWith(PARAMETER_PREFIX)) {
+                String name = key.substring(PARAMETER_PREFIX.length());
+                if (name.isEmpty()) {
+                    throw r.error(key, r.given().get(key), "a parameter needs a name after " + PARAMETER_PREFIX);
+                }
+                String value = r.string(key);
+                parameters.put(name, value == null ? "" : value);
+            }
+        }
+        return Collections.unmodifiableSortedMap(parameters);
+    }
+
+    /** Whether {@code key} is a parameter of the robot ({@code param.NAME}), which any properties may hold. */
+    public static boolean isParameter(String key) {
+        return key.startsWith(PARAMETER_PREFIX) && key.length() > PARAMETER_PREFIX.length();
     }
 
     private static String orDefault(String v, String fallback) {

@@ -25,7 +25,8 @@ import rp1.simulator.net.Transport;
  * several names may be given, comma-separated). Calls, in the original's order: constructor,
  * {@code setInputOutputStreams} (with {@code dlcSetIO}: in-process pipes, no handshake),
  * {@code setLogger} (with {@code dlcSetLog}: the server's log), then {@code initialize()} and
- * {@code run()} on a thread per client.
+ * {@code run()} on a thread per client. An {@code RsClient} is also told the run it is part of
+ * ({@code setRunContext}): the {@code param.NAME} properties, the seed, and where its results go.
  *
  * <p>The clients are connected, and so numbered, in the order {@code dlcName} lists them, and started
  * one at a time in that order: a client's {@code initialize()} begins only once the one before has
@@ -105,15 +106,20 @@ final class ClientLauncher implements LoadedClient.Listener {
     void launch(Simulation simulation, ClientRegistry registry, int port, Outcome whenDone) throws IOException {
         outcome = whenDone;
         for (LoadedClient c : clients) {
+            int session = LoadedRunContext.NO_SESSION;
             if (config.dlcSetIO && config.dlcDelivery != ServerConfig.Delivery.PIPES && c.whyNotDirect() == null) {
-                connectDirect(c, simulation, registry);
+                session = connectDirect(c, simulation, registry);
             } else if (config.dlcSetIO) {
-                connectInProcess(c, simulation, registry);
+                session = connectInProcess(c, simulation, registry);
             } else {
                 pointAtServer(c, port);
                 if (config.dlcSetLog) {
                     c.client.setLogger(log);
                 }
+            }
+            if (c.client instanceof RsClient rs) {
+                rs.setRunContext(new LoadedRunContext(config.parameters, simulation.getSeed(),
+                        simulation.getReportedResults(), session));
             }
         }
         Thread starter = new Thread(this::startInOrder, "dlc start");
@@ -142,7 +148,8 @@ final class ClientLauncher implements LoadedClient.Listener {
         }
     }
 
-    private void connectInProcess(LoadedClient c, Simulation simulation, ClientRegistry registry) {
+    /** Connects the client through pipes; returns its session number. */
+    private int connectInProcess(LoadedClient c, Simulation simulation, ClientRegistry registry) {
         String description = "client " + registry.nextNumber() + " (in-process " + c.className + ")";
         ClientConnection connection = new ClientConnection(description);
         registry.add(connection);
@@ -151,17 +158,19 @@ final class ClientLauncher implements LoadedClient.Listener {
                         "writer " + description, connection::close));
         c.setLink(link);
         log.log(description + " connected");
+        return link.session().getNumber();
     }
 
     /**
      * The client's handlers are called by the simulation itself, its requests go straight to its
-     * session: no pipes, no event loop, no thread once {@code initialize()} has returned.
+     * session: no pipes, no event loop, no thread once {@code initialize()} has returned. Returns its
+     * session number.
      */
-    private void connectDirect(LoadedClient c, Simulation simulation, ClientRegistry registry) {
+    private int connectDirect(LoadedClient c, Simulation simulation, ClientRegistry registry) {
         String description = "client " + registry.nextNumber() + " (in-process " + c.className + ", direct)";
         ClientConnection connection = new ClientConnection(description);
         registry.add(connection);
-        simulation.attach(connection, description, Simulation.Link.DIRECT);
+        int session = simulation.attach(connection, description, Simulation.Link.DIRECT).getNumber();
         AtomicReference<Throwable> failure = new AtomicReference<>();
         connection.addEndListener(() -> c.sessionEnded(log, this, failure.get()));
         connection.connectDirect((RsClient) c.client, failure::set);
@@ -170,6 +179,7 @@ final class ClientLauncher implements LoadedClient.Listener {
             c.client.setLogger(log);
         }
         log.log(description + " connected");
+        return session;
     }
 
     private void pointAtServer(LoadedClient c, int port) throws IOException {

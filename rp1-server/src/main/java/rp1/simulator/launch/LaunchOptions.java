@@ -4,20 +4,25 @@ import java.util.OptionalInt;
 
 /**
  * How to launch a server beyond its command line: a port that replaces the properties' one (0 for
- * any free port, which tests use) and the view. Immutable; start from {@link #defaults()}.
+ * any free port, which tests use), the view, and the class loader its clients' classes and
+ * class-path resources come from (a sweep gives each run one of its own). Immutable; start from
+ * {@link #defaults()}.
  */
 public final class LaunchOptions {
     final OptionalInt port;
     final ViewHook view;
+    /** Null for the thread's context class loader. */
+    final ClassLoader loader;
 
-    private LaunchOptions(OptionalInt port, ViewHook view) {
+    private LaunchOptions(OptionalInt port, ViewHook view, ClassLoader loader) {
         this.port = port;
         this.view = view;
+        this.loader = loader;
     }
 
     /** The properties' port and the standard view. */
     public static LaunchOptions defaults() {
-        return new LaunchOptions(OptionalInt.empty(), ViewHook.standard());
+        return new LaunchOptions(OptionalInt.empty(), ViewHook.standard(), null);
     }
 
     /** Listens on {@code port} whatever the properties say; 0 picks a free port. */
@@ -25,11 +30,16 @@ public final class LaunchOptions {
         if (port < 0 || port > 65535) {
             throw new IllegalArgumentException("port must be in [0, 65535], got " + port);
         }
-        return new LaunchOptions(OptionalInt.of(port), view);
+        return new LaunchOptions(OptionalInt.of(port), view, loader);
     }
 
     /** Uses {@code view} when the properties enable the GUI. */
     public LaunchOptions withView(ViewHook view) {
-        return new LaunchOptions(port, view);
+        return new LaunchOptions(port, view, loader);
+    }
+
+    /** Loads the clients' classes (and looks for class-path resources) with {@code loader}. */
+    public LaunchOptions withClassLoader(ClassLoader loader) {
+        return new LaunchOptions(port, view, loader);
     }
 }

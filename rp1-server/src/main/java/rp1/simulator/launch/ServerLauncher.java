@@ -47,14 +47,15 @@ public final class ServerLauncher {
      * @param args             the command line ({@link ServerArguments})
      * @param workingDirectory where {@code -p}, the floor plan, {@code -cp}'s entries and the log file are
      *                         looked for first
-     * @param options          a port override (before {@code --port} and the properties' port) and the view
+     * @param options          a port override (before {@code --port} and the properties' port), the view
+     *                         and the clients' class loader (to which {@code -cp} adds)
      * @throws StartupException if the server cannot start; nothing is left running
      */
     public static RunningServer start(String[] args, Path workingDirectory, LaunchOptions options)
             throws StartupException {
         ServerArguments arguments = arguments(args);
-        ClassLoader loader = ClientClassPath.loader(ClientClassPath.resolve(arguments.classPath, workingDirectory),
-                classLoader());
+        ClassLoader base = options.loader != null ? options.loader : classLoader();
+        ClassLoader loader = ClientClassPath.loader(ClientClassPath.resolve(arguments.classPath, workingDirectory), base);
         ResourceLocator locator = new ResourceLocator(workingDirectory, loader);
         ServerConfig config = configure(arguments, locator);
         ServerLog log = openLog(config, workingDirectory);

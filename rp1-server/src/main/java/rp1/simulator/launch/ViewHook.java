@@ -4,6 +4,7 @@ import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
 import rp1.simulator.config.ServerConfig;
 import rp1.view.ViewLauncher;
+import rp1.web.LiveView;
 
 /**
  * Where a view plugs into the server: called once at start-up (the view itself decides, from
@@ -48,8 +49,25 @@ public interface ViewHook {
         return () -> { };
     };
 
-    /** The simulator's view ({@link rp1.view.ViewLauncher}): a window, picture files, or neither. */
+    /**
+     * The simulator's view ({@link rp1.view.ViewLauncher}): a window, picture files, or neither; and
+     * the page a browser watches the run on ({@link rp1.web.LiveView}) if {@code viewPort} asks for it.
+     */
     static ViewHook standard() {
-        return context -> ViewLauncher.start(context.simulation, context.config, context.log, context.exit);
+        return context -> {
+            AutoCloseable live = LiveView.startIfAsked(context.simulation, context.config, context.log);
+            AutoCloseable view;
+            try {
+                view = ViewLauncher.start(context.simulation, context.config, context.log, context.exit);
+            } catch (Exception | Error e) {
+                live.close();
+                throw e;
+            }
+            return () -> {
+                try (live) {
+                    view.close();
+                }
+            };
+        };
     }
 }

@@ -8,6 +8,7 @@ import rp1.rossum.RsConnection;
 import rp1.rossum.RsPipe;
 import rp1.rossum.RsRunnable;
 import rp1.simulator.Simulation;
+import rp1.simulator.session.ClientSession;
 
 /**
  * A client connected to a simulation in the same process through a pair of {@link RsPipe}s, with no
@@ -19,6 +20,7 @@ import rp1.simulator.Simulation;
 public final class InProcessClient {
     private final RsPipe toServer = new RsPipe();
     private final RsPipe toClient = new RsPipe();
+    private final ClientSession session;
 
     /**
      * Connects {@code client} to {@code simulation}: the connection is attached and its reader thread
@@ -37,7 +39,7 @@ public final class InProcessClient {
     public InProcessClient(Simulation simulation, RsRunnable client, String description, boolean shareLog,
                            RsConnection connection, Function<RsPipe, OutputStream> outbound) {
         connection.setInputOutputStreams(toServer.getInputStream(), outbound.apply(toClient));
-        simulation.attach(connection, description, Simulation.Link.READER);
+        session = simulation.attach(connection, description, Simulation.Link.READER);
         Thread reader = new Thread(connection, "connection " + description);
         reader.setDaemon(true);
         reader.start();
@@ -45,6 +47,11 @@ public final class InProcessClient {
         if (shareLog) {
             client.setLogger(simulation.getLog());
         }
+    }
+
+    /** The client's session in the simulation. */
+    public ClientSession session() {
+        return session;
     }
 
     /**

@@ -1,24 +1,34 @@
 package rp1.simulator.net;
 
+import java.awt.Color;
 import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
-import java.io.DataOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyCircle;
+import rp1.rossum.RsConnection;
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsPlan;
+import rp1.rossum.request.RsMotionRequest;
+import rp1.rossum.wire.RequestCodec;
+import rp1.rossum.wire.WireCodes;
+import rp1.rossum.wire.WireIn;
+import rp1.rossum.wire.WireOut;
 import rp1.simulator.Simulation;
 import rp1.simulator.SimulationSettings;
 
 /**
- * Prepares the server for its first network client before its port opens: a few clients, written as
- * raw bytes, join a scratch simulation of the same floor plan over loopback (handshake, body,
- * placement, motion, departure), so that the classes they need are loaded and their code has run
- * before a real client waits on it. Each server does it once, before its port opens. The scratch
+ * Prepares the server for its first network client before its port opens: a few clients, speaking
+ * the protocol through its codecs without the client library's threads, join a scratch simulation of
+ * the same floor plan over loopback (handshake, body, placement, motion, departure), so that the
+ * classes they need are loaded and their code has run before a real client waits on it. Each server does it once, before its port opens. The scratch
  * simulation gets a plan of its own: a {@code World} gives its plan the world's random source, so
  * sharing the real plan would leave random target selection drawing from the scratch source instead
  * of the seeded one, and the run would no longer be what its recording replays.
@@ -26,6 +36,8 @@ import rp1.simulator.SimulationSettings;
 public final class WarmUp {
     private static final int CLIENTS = 300;
     private static final int TIMEOUT_MILLIS = 2000;
+    private static final byte[] BODY = warmBody();
+
     private WarmUp() {
     }
 
@@ -64,66 +76,54 @@ public final class WarmUp {
 
     /**
      * One client: handshake, a round body, a random placement and a motion; it acknowledges the
-     * placement, reads the start of the next message and leaves without a word.
+     * placement, reads the start of the next message and leaves without a word. Every message is
+     * encoded by the protocol's own codecs.
      */
     private static void join(int port) throws IOException {
         try (Socket s = new Socket()) {
             s.setTcpNoDelay(true);
             s.setSoTimeout(TIMEOUT_MILLIS);
             s.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), TIMEOUT_MILLIS);
-            DataOutputStream out = new DataOutputStream(s.getOutputStream());
+            OutputStream out = new BufferedOutputStream(s.getOutputStream());
             DataInputStream in = new DataInputStream(new BufferedInputStream(s.getInputStream()));
-            header(out, 0, 1);
+            WireIn wire = new WireIn(in);
+            message(0, WireCodes.CONNECT).writeTo(out);
             out.flush();
-            in.readFully(new byte[20]);
-            body(out);
-            request(out, 2, 7);
-            out.writeInt(7);
-            out.writeUTF("$random");
-            request(out, 3, 3);
-            out.writeDouble(0.2);
-            out.writeDouble(0.0);
-            out.writeDouble(0.1);
+            in.readFully(new byte[WireCodes.HEADER_BYTES]);
+            message(1, WireCodes.BODY_SPECIFICATION).writeTo(out);
+            out.write(BODY);
+            write(out, 2, RequestCodec.placement("$random"));
+            write(out, 3, RequestCodec.motion(new RsMotionRequest(0.2, 0.0, 0.1)));
             out.flush();
-            byte[] prefix = new byte[20 + 16];
-            in.readFully(prefix);
-            header(out, 4, 6);
-            out.write(prefix, 32, 4);
+            in.readFully(new byte[WireCodes.HEADER_BYTES]);
+            wire.i32("event code");
+            wire.i32("event index");
+            wire.f64("event simTime");
+            int interlock = wire.i32("event interlock");
+            message(4, WireCodes.INTERLOCK).i32(interlock).writeTo(out);
             out.flush();
-            in.readFully(new byte[20]);
+            in.readFully(new byte[WireCodes.HEADER_BYTES]);
         }
     }
 
-    private static void header(DataOutputStream out, int sequence, int code) throws IOException {
-        out.writeInt(0);
-        out.writeInt(0);
-        out.writeInt(0);
-        out.writeInt(sequence);
-        out.writeInt(code);
+    /** A header with client id and key 0 (the warm-up's clients do not care what they are called). */
+    private static WireOut message(int sequence, int code) {
+        return new WireOut().header(0, 0, sequence, code);
     }
 
-    private static void request(DataOutputStream out, int sequence, int code) throws IOException {
-        header(out, sequence, 4);
-        out.writeInt(code);
-        out.writeInt(0);
+    private static void write(OutputStream out, int sequence, WireOut request) throws IOException {
+        message(sequence, WireCodes.REQUEST).writeTo(out);
+        request.writeTo(out);
     }
 
-    /** A body "warm" with one circle of radius 5 cm (docs/protocol.md section 8.7 shows the layout). */
-    private static void body(DataOutputStream out) throws IOException {
-        header(out, 1, 5);
-        out.writeUTF("warm");
-        out.writeInt(1);
-        out.writeInt(1);
-        out.writeInt(2);
-        out.writeDouble(0.0);
-        out.writeDouble(0.0);
-        out.writeDouble(0.05);
-        out.writeUTF("c");
-        for (int i = 0; i < 4; i++) {
-            out.writeInt(1);
-            out.writeInt(255);
-            out.writeInt(200);
-            out.writeInt(0);
-        }
+    /** A body "warm" with one circle of radius 5 cm, as its payload on the wire. */
+    private static byte[] warmBody() {
+        RsBody body = new RsBody("warm");
+        RsBodyCircle circle = new RsBodyCircle(0.0, 0.0, 0.05);
+        circle.setName("c");
+        circle.setFillColor(new Color(255, 200, 0));
+        circle.setLineColor(new Color(255, 200, 0));
+        body.addPart(circle);
+        return RsConnection.encodeBodySpecification(body);
     }
 }

@@ -22,12 +22,12 @@ import rp1.rossum.event.RsTimeoutEvent;
  * client it went to, its name (the API class without {@code Rs} and {@code Event}) and its fields as
  * {@code name=value}, named as in the API. The same event always gives the same line.
  */
-final class EventText {
+public final class EventText {
     private EventText() {
     }
 
     /** The line for {@code event} sent to client {@code client}. */
-    static String line(int client, RsEvent event) {
+    public static String line(int client, RsEvent event) {
         TextLine line = new TextLine(Double.toString(event.simTime)).integer(client);
         if (event instanceof RsPositionEvent e) {
             line.word("Position").field("x", e.x).field("y", e.y).field("orientation", e.orientation)

@@ -1,5 +1,7 @@
 package rp1.simulator.session;
 
+import rp1.rossum.wire.WireLimits;
+
 /**
  * What one client may make the server hold, in bytes (docs/properties.md, docs/protocol.md section
  * 14): events waiting for it to read them, its pending timeouts, its subscriptions, and a message of
@@ -15,8 +17,8 @@ public final class ClientBudgets {
     public static final int TIMEOUT_BYTES = 256;
     /** Bytes one subscription counts. */
     public static final int SUBSCRIPTION_BYTES = 128;
-    /** The defaults of the properties. */
-    public static final ClientBudgets DEFAULTS = new ClientBudgets(8 << 20, 4 << 20, 1 << 20, 4 << 20);
+    /** The defaults of the properties; a message may take all the protocol allows one to be. */
+    public static final ClientBudgets DEFAULTS = new ClientBudgets(8 << 20, 4 << 20, 1 << 20, WireLimits.MAX_MESSAGE_BYTES);
 
     /** Bytes of events waiting for the client to read them ({@code clientOutputBudget}). */
     public final int output;

@@ -3,43 +3,16 @@ package rp1.simulator.session;
 import java.util.HashSet;
 import java.util.Set;
 import java.util.function.BooleanSupplier;
-import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.atomic.AtomicInteger;
 
 import rp1.rossum.RsBody;
 import rp1.rossum.RsConnection;
-import rp1.rossum.RsConnectionBodyHandler;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsWheelSystem;
 import rp1.rossum.event.RsEvent;
 import rp1.rossum.event.RsHeartbeatEvent;
 import rp1.rossum.event.RsPlanEvent;
 import rp1.rossum.event.RsTimeoutEvent;
-import rp1.rossum.request.RsActuatorControlRequest;
-import rp1.rossum.request.RsActuatorControlRequestHandler;
-import rp1.rossum.request.RsEncoderStatusRequest;
-import rp1.rossum.request.RsEncoderStatusRequestHandler;
-import rp1.rossum.request.RsHaltRequest;
-import rp1.rossum.request.RsHaltRequestHandler;
-import rp1.rossum.request.RsHeartbeatRequest;
-import rp1.rossum.request.RsHeartbeatRequestHandler;
 import rp1.rossum.request.RsMotionRequest;
-import rp1.rossum.request.RsMotionRequestHandler;
-import rp1.rossum.request.RsPainterChangeRequest;
-import rp1.rossum.request.RsPainterChangeRequestHandler;
-import rp1.rossum.request.RsPlacementRequest;
-import rp1.rossum.request.RsPlacementRequestHandler;
-import rp1.rossum.request.RsPlanRequest;
-import rp1.rossum.request.RsPlanRequestHandler;
-import rp1.rossum.request.RsPositionRequestHandler;
-import rp1.rossum.request.RsRequest;
-import rp1.rossum.request.RsSensorRequest;
-import rp1.rossum.request.RsSensorRequestHandler;
-import rp1.rossum.request.RsSubscriptionRequest;
-import rp1.rossum.request.RsSubscriptionRequestHandler;
-import rp1.rossum.request.RsTargetSelectionRequest;
-import rp1.rossum.request.RsTargetSelectionRequestHandler;
-import rp1.rossum.request.RsTimeoutRequestHandler;
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
 import rp1.simulator.scheduler.TaskHandle;
@@ -52,22 +25,19 @@ import rp1.simulator.world.World;
  * on its robot and the world (docs/behavior.md section 4.3) and sends the client the events the world
  * produces for it.
  *
- * <p>Two halves, on two kinds of thread. The request handlers its connection calls (on a transport
- * thread, or on whatever thread an in-process client sends from) only wrap each request and queue it
- * as an input of the simulation. At the next boundary between tasks, the thread running tasks applies
- * it ({@link Request#applyTo}), stamped with the current time: only then does anything change, so all
- * session and model state is touched by that thread alone.
+ * <p>Two halves, on two kinds of thread. Its {@link RequestIntake}, the listener its connection hands
+ * each request to (on a transport thread, or on whatever thread an in-process client sends from),
+ * only builds a {@link Request} record and queues it as an input of the simulation. At the next
+ * boundary between tasks, the thread running tasks applies it here ({@link Request#applyTo}),
+ * stamped with the current time: only then does anything change, so all session and model state is
+ * touched by that thread alone.
  *
  * <p>Requests that concern the robot are ignored until the client has sent a body; requests for a
  * robot that is not on the floor are ignored as RP1 0.60 ignores them; requests naming parts the body
  * does not have are ignored with a verbose log line (RP1 0.60 crashed a thread on them). After the
  * client has left, nothing it sent is applied.
  */
-public final class ClientSession implements EventSink, RsTimeoutRequestHandler, RsSubscriptionRequestHandler,
-        RsMotionRequestHandler, RsPositionRequestHandler, RsPlacementRequestHandler, RsHaltRequestHandler,
-        RsSensorRequestHandler, RsTargetSelectionRequestHandler, RsPainterChangeRequestHandler,
-        RsActuatorControlRequestHandler, RsEncoderStatusRequestHandler, RsPlanRequestHandler,
-        RsHeartbeatRequestHandler {
+public final class ClientSession implements EventSink {
 
     /** What a session works with: the simulation's parts, handed over by the simulation. */
     public interface Host {
@@ -101,25 +71,17 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     private final RsConnection connection;
     private final Subscriptions subscriptions = new Subscriptions();
     private final Set<TimeoutTask> timeouts = new HashSet<>();
-    private final ClientBudgets budgets;
-    /** Timeouts asked for that have not fallen due: waiting for a boundary or scheduled. */
-    private final AtomicInteger timeoutsHeld = new AtomicInteger();
-    /** Subscription requests waiting for a boundary. */
-    private final AtomicInteger subscriptionsWaiting = new AtomicInteger();
-    /** The size of {@link #subscriptions}, published by the thread running tasks. */
-    private volatile int subscriptionsHeld;
-    private final AtomicBoolean overBudget = new AtomicBoolean();
+    private final RequestIntake intake;
     private Robot robot;
     private boolean departed;
     private TaskHandle startMotion = TaskHandle.NONE;
     private Heartbeats.Beat heartbeat;
     private Runnable onDeparture = () -> { };
-    private volatile Runnable afterSubmit = () -> { };
     private volatile BooleanSupplier mayWrite = () -> true;
 
     /**
      * A session for the client numbered {@code number} (1, 2, ... in the order clients joined) on
-     * {@code connection}: registers itself for every request the connection reads and for its body.
+     * {@code connection}: its intake becomes the connection's request listener.
      */
     public ClientSession(int number, String description, RsConnection connection, Host host) {
         this.number = number;
@@ -129,30 +91,13 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         this.scheduler = host.scheduler();
         this.log = host.log();
         this.connection = connection;
-        this.budgets = host.budgets();
-        register(connection);
+        this.intake = new RequestIntake(this, host, connection);
+        connection.setRequestListener(intake);
     }
 
-    private void register(RsConnection c) {
-        c.setTimeoutRequestHandler(this);
-        c.setSubscriptionRequestHandler(this);
-        c.setMotionRequestHandler(this);
-        c.setPositionRequestHandler(this);
-        c.setPlacementRequestHandler(this);
-        c.setHaltRequestHandler(this);
-        c.setSensorRequestHandler(this);
-        c.setTargetSelectionRequestHandler(this);
-        c.setPainterChangeRequestHandler(this);
-        c.setActuatorControlRequestHandler(this);
-        c.setEncoderStatusRequestHandler(this);
-        c.setPlanRequestHandler(this);
-        c.setHeartbeatRequestHandler(this);
-        c.setBodyHandler(new RsConnectionBodyHandler() {
-            @Override
-            public void process(RsBody body) {
-                submit(new Request.Body(body));
-            }
-        });
+    /** The transport half: where the connection's requests go, and how the client's departure is queued. */
+    public RequestIntake intake() {
+        return intake;
     }
 
     /** The client's number: 1, 2, ... in the order the clients joined. */
@@ -171,14 +116,6 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     }
 
     /**
-     * Run on the transport's thread after each request has been queued: a reader thread of its own
-     * runs the tasks then due itself.
-     */
-    public void setAfterSubmit(Runnable action) {
-        afterSubmit = action;
-    }
-
-    /**
      * Asked on the thread running tasks before each event is written to the client (the interlock
      * numbers it there); false: the client has left and the event is not written.
      */
@@ -190,117 +127,6 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
     public void setDepartureListener(Runnable listener) {
         onDeparture = listener;
     }
-
-    // ---------------------------------------------------------------------------------------------
-    // Transport side: wrap and queue.
-
-    private void submit(Request r) {
-        host.submit(this, r);
-        afterSubmit.run();
-    }
-
-    /** The connection ended: the client's departure is queued like its requests. Any thread. */
-    public void connectionClosed() {
-        submit(new Request.Departure());
-    }
-
-    /** Queues the client's departure without running what follows a submission; any thread. */
-    public void queueDeparture() {
-        host.submit(this, new Request.Departure());
-    }
-
-    @Override
-    public void process(double duration, int timeoutIndex) {
-        if (withinBudget(ClientBudgets.over(timeoutsHeld.incrementAndGet(), "pending timeouts",
-                ClientBudgets.TIMEOUT_BYTES, budgets.timeouts, "clientTimeoutBudget"))) {
-            submit(new Request.Timeout(duration, timeoutIndex));
-        }
-    }
-
-    @Override
-    public void process(RsSubscriptionRequest r) {
-        if (withinBudget(ClientBudgets.over(subscriptionsWaiting.incrementAndGet() + subscriptionsHeld,
-                "subscriptions", ClientBudgets.SUBSCRIPTION_BYTES, budgets.subscriptions, "clientSubscriptionBudget"))) {
-            submit(new Request.Subscription(r.eventCode, r.eventIndex, r.eventEnable));
-        }
-    }
-
-    /**
-     * Whether a request may be queued: {@code over} is null. Otherwise the client has asked the server
-     * to hold more than its budget: it is disconnected (once), naming the budget.
-     */
-    private boolean withinBudget(String over) {
-        if (over == null) {
-            return true;
-        }
-        if (overBudget.compareAndSet(false, true)) {
-            connection.inputFailed("over budget: " + over);
-        }
-        return false;
-    }
-
-    @Override
-    public void process(RsHeartbeatRequest r) {
-        submit(new Request.Heartbeat(r.interval));
-    }
-
-    @Override
-    public void process(RsMotionRequest r) {
-        submit(new Request.Motion(r));
-    }
-
-    @Override
-    public void process(RsHaltRequest r) {
-        submit(new Request.Halt());
-    }
-
-    @Override
-    public void process() {
-        submit(new Request.Position());
-    }
-
-    @Override
-    public void process(RsPlacementRequest r) {
-        submit(new Request.Placement(r.name));
-    }
-
-    @Override
-    public void process(RsSensorRequest r) {
-        submit(new Request.SensorStatus(r.sensorID));
-    }
-
-    @Override
-    public void process(RsTargetSelectionRequest r) {
-        submit(new Request.TargetSelection(r.random, r.name, r.status, r.exclusive));
-    }
-
-    @Override
-    public void process(RsPlanRequest r) {
-        submit(new Request.Plan());
-    }
-
-    @Override
-    public void process(RsPainterChangeRequest r) {
-        submit(Request.PainterChange.of(r));
-    }
-
-    @Override
-    public void process(RsActuatorControlRequest r) {
-        submit(new Request.ActuatorControl(r.actuatorID, r.commandID, r.getParameterNames(), r.getParameterValues()));
-    }
-
-    @Override
-    public void process(RsEncoderStatusRequest r) {
-        submit(new Request.EncoderStatus(r.requestIndex, r.encoderID, r.clearOnReport));
-    }
-
-    @Override
-    public void processRequest(RsRequest r) {
-        log.verbose(description + ": unexpected untyped request " + r);
-    }
-
-    // ---------------------------------------------------------------------------------------------
-    // Simulation side: applied at a boundary, on the thread running tasks.
 
     /** Applies {@code request} at {@code now}; nothing once the client has left. */
     void apply(Request request, double now) {
@@ -357,8 +183,7 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
 
     void subscription(Request.Subscription r) {
         subscriptions.set(r.code(), r.index(), r.enable());
-        subscriptionsHeld = subscriptions.size();
-        subscriptionsWaiting.decrementAndGet();
+        intake.subscriptionApplied(subscriptions.size());
     }
 
     void timeout(Request.Timeout r, double now) {
@@ -379,7 +204,7 @@ public final class ClientSession implements EventSink, RsTimeoutRequestHandler, 
         @Override
         public void run(double time) {
             timeouts.remove(this);
-            timeoutsHeld.decrementAndGet();
+            intake.timeoutDone();
             send(new RsTimeoutEvent(time, index));
         }
     }

@@ -4,6 +4,7 @@ import java.util.HashSet;
 import java.util.Set;
 
 import rp1.rossum.event.RsEvent;
+import rp1.rossum.wire.EventKey;
 
 /**
  * Which simulation-generated events a client wants (docs/protocol.md section 10): (event code, index)
@@ -21,9 +22,9 @@ final class Subscriptions {
             return;
         }
         if (enable) {
-            wanted.add(key(code, index));
+            wanted.add(EventKey.of(code, index));
         } else {
-            wanted.remove(key(code, index));
+            wanted.remove(EventKey.of(code, index));
         }
     }
 
@@ -33,10 +34,7 @@ final class Subscriptions {
     }
 
     boolean isSubscribed(int code, int index) {
-        return wanted.contains(key(code, index));
+        return wanted.contains(EventKey.of(code, index));
     }
 
-    private static long key(int code, int index) {
-        return ((long) code << 32) | (index & 0xFFFFFFFFL);
-    }
 }

@@ -12,6 +12,11 @@ import rp1.rossum.RsRectangle;
  * that need a deterministic order sort or use the item numbers.
  */
 final class Grid {
+    /** The cell size the indexes ask for, metres: about a robot's neighbourhood. */
+    private static final double INDEX_CELL = 1.0;
+    /** The most cells an index's grid has, whatever its area. */
+    private static final int INDEX_MAX_CELLS = 1 << 16;
+
     private final double minX;
     private final double minY;
     private final double cell;
@@ -21,6 +26,10 @@ final class Grid {
     private final int[] counts;
     private int[] marks = new int[16];
     private int stamp;
+    /** What the last {@link #collect} found; one buffer, reused by every query. */
+    private int[] hits = new int[32];
+    private int hitCount;
+    private final Visitor collector = this::addHit;
 
     /**
      * A grid over {@code area} with cells of {@code cellSize} metres, or larger ones where that would
@@ -49,6 +58,11 @@ final class Grid {
         this.rows = (int) cellsAcross(height, size);
         this.cells = new int[cols * rows][];
         this.counts = new int[cols * rows];
+    }
+
+    /** The grid the wall and robot indexes file their items in: metre cells, at most 65536 of them. */
+    static Grid forIndex(RsRectangle area) {
+        return new Grid(area, INDEX_CELL, INDEX_MAX_CELLS);
     }
 
     /** Cells of {@code size} needed to cover {@code length}, as a double so that no product overflows. */
@@ -158,6 +172,40 @@ final class Grid {
                 }
             }
         }
+    }
+
+    /**
+     * Collects the items {@link #query} would visit, in ascending item order; returns how many, each
+     * then read with {@link #hit}. The answer is valid until the next query.
+     */
+    int collect(double x0, double y0, double x1, double y1) {
+        hitCount = 0;
+        query(x0, y0, x1, y1, collector);
+        return sortedHits();
+    }
+
+    /** Like {@link #collect}, for the items {@link #querySegment} would visit. */
+    int collectAlongSegment(double x0, double y0, double x1, double y1, double radius) {
+        hitCount = 0;
+        querySegment(x0, y0, x1, y1, radius, collector);
+        return sortedHits();
+    }
+
+    /** The {@code i}th item the last collection found. */
+    int hit(int i) {
+        return hits[i];
+    }
+
+    private void addHit(int id) {
+        if (hitCount == hits.length) {
+            hits = Arrays.copyOf(hits, hitCount * 2);
+        }
+        hits[hitCount++] = id;
+    }
+
+    private int sortedHits() {
+        Arrays.sort(hits, 0, hitCount);
+        return hitCount;
     }
 
     private void visitCell(int index, int mark, Visitor visitor) {

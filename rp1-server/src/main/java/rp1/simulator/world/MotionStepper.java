@@ -1,10 +1,12 @@
 package rp1.simulator.world;
 
 import java.util.ArrayList;
-import java.util.Comparator;
+import java.util.Arrays;
 import java.util.List;
 import java.util.PriorityQueue;
+import java.util.function.DoubleConsumer;
 
+import rp1.rossum.RsPlan;
 import rp1.simulator.scheduler.Scheduler;
 import rp1.simulator.scheduler.Task;
 import rp1.simulator.scheduler.TaskHandle;
@@ -20,35 +22,76 @@ import rp1.simulator.scheduler.TaskHandle;
  * any robot needed it, which made a crowd cost the square of its size).
  *
  * <p>A request for a moving robot takes effect at its next evaluation; for a robot at rest, at once.
+ * What is near a robot comes from the {@link Surroundings}; each robot's next evaluation time is kept
+ * here, by robot number.
  */
 final class MotionStepper implements Task {
-    private static final Comparator<Robot> DUE =
-            Comparator.comparingDouble(Robot::nextEvaluation).thenComparingInt(Robot::getNumber);
-
-    private final World world;
     private final Scheduler scheduler;
     private final double interval;
+    private final RsPlan plan;
+    private final Surroundings surroundings;
+    private final RobotContacts contacts;
+    /** Told the time after every run: the picture changed. */
+    private final DoubleConsumer changed;
     /** Runs of this task so far: the order in which motions started and searches were made. */
     private long runs;
-    private final PriorityQueue<Robot> due = new PriorityQueue<>(DUE);
+    /** By robot number: when the robot is next evaluated (NaN: not due). */
+    private double[] nextEvaluation = new double[0];
+    /** The robots due, earliest first, then in joining order. */
+    private final PriorityQueue<Robot> due = new PriorityQueue<>(this::compareDue);
     private TaskHandle queued = TaskHandle.NONE;
     private double queuedTime = Double.NaN;
 
-    MotionStepper(World world, Scheduler scheduler, double interval) {
-        this.world = world;
+    /**
+     * @param scheduler    queues the motion task
+     * @param interval     seconds between a moving robot's evaluations (the modelling interval)
+     * @param plan         the floor plan, for the sensors
+     * @param surroundings what is near each robot
+     * @param changed      told the simulated time after every run of the task
+     */
+    MotionStepper(Scheduler scheduler, double interval, RsPlan plan, Surroundings surroundings, DoubleConsumer changed) {
         this.scheduler = scheduler;
         this.interval = interval;
+        this.plan = plan;
+        this.surroundings = surroundings;
+        this.contacts = new RobotContacts(surroundings);
+        this.changed = changed;
+    }
+
+    private int compareDue(Robot a, Robot b) {
+        int byTime = Double.compare(nextEvaluation[a.getNumber()], nextEvaluation[b.getNumber()]);
+        return byTime != 0 ? byTime : Integer.compare(a.getNumber(), b.getNumber());
+    }
+
+    private boolean isDue(Robot r) {
+        int n = r.getNumber();
+        return n < nextEvaluation.length && !Double.isNaN(nextEvaluation[n]);
+    }
+
+    private double nextEvaluation(Robot r) {
+        return nextEvaluation[r.getNumber()];
+    }
+
+    private void setNextEvaluation(Robot r, double time) {
+        int n = r.getNumber();
+        if (n >= nextEvaluation.length) {
+            int old = nextEvaluation.length;
+            nextEvaluation = Arrays.copyOf(nextEvaluation, Math.max(n + 1, 2 * old));
+            Arrays.fill(nextEvaluation, old, nextEvaluation.length, Double.NaN);
+        }
+        nextEvaluation[n] = time;
     }
 
     /** The robot is evaluated at {@code time}, or earlier if it already is due earlier. */
     void evaluateBy(Robot r, double time) {
-        if (r.isDue() && r.nextEvaluation() <= time) {
+        boolean isDue = isDue(r);
+        if (isDue && nextEvaluation(r) <= time) {
             return;
         }
-        if (r.isDue()) {
+        if (isDue) {
             due.remove(r);
         }
-        r.setNextEvaluation(time);
+        setNextEvaluation(r, time);
         due.add(r);
         requeue();
     }
@@ -58,16 +101,16 @@ final class MotionStepper implements Task {
      * time (a moving robot starts the new motion at its next step, as in RP1 0.60).
      */
     void wake(Robot r, double time) {
-        if (!r.isDue()) {
+        if (!isDue(r)) {
             evaluateBy(r, time);
         }
     }
 
     /** The robot leaves: no more evaluations. */
     void forget(Robot r) {
-        if (r.isDue()) {
+        if (isDue(r)) {
             due.remove(r);
-            r.clearNextEvaluation();
+            setNextEvaluation(r, Double.NaN);
             requeue();
         }
     }
@@ -78,7 +121,7 @@ final class MotionStepper implements Task {
             queued.cancel();
             return;
         }
-        double first = due.peek().nextEvaluation();
+        double first = nextEvaluation(due.peek());
         if (queued.isScheduled() && queuedTime == first) {
             return;
         }
@@ -91,9 +134,9 @@ final class MotionStepper implements Task {
     public void run(double time) {
         runs++;
         List<Robot> group = new ArrayList<>();
-        while (!due.isEmpty() && due.peek().nextEvaluation() <= time) {
+        while (!due.isEmpty() && nextEvaluation(due.peek()) <= time) {
             Robot r = due.poll();
-            r.clearNextEvaluation();
+            setNextEvaluation(r, Double.NaN);
             group.add(r);
         }
         List<Robot> active = new ArrayList<>();
@@ -105,30 +148,30 @@ final class MotionStepper implements Task {
         for (Robot r : active) {
             r.advance(time);
             if (r.hasPendingRequest()) {
-                r.startPendingMotion(time, world.wallsForMotion(r, r.pendingRequest()));
-                r.setMotionStartedIn(runs);
+                r.startPendingMotion(time, surroundings.wallsForMotion(r, r.pendingRequest()));
+                contacts.motionStarted(r, runs);
                 // Filed where the new motion can take it before any contact search looks it up.
-                world.indexRobot(r, time, interval);
+                surroundings.file(r, time, interval);
             }
         }
-        world.searchContacts(active, time, time + interval + RobotContacts.LOOK_AHEAD, runs);
+        if (surroundings.robotsCanMeet()) {
+            contacts.resolve(active, time, time + interval + RobotContacts.LOOK_AHEAD, runs, this);
+        }
         for (Robot r : active) {
-            r.sense(time, world.getPlan(), world.obstaclesFor(r, time));
+            r.sense(time, plan, surroundings.obstaclesForSensors(r, time));
             double next = r.finish(time, interval);
-            world.indexRobot(r, time, interval);
+            surroundings.file(r, time, interval);
             if (!Double.isNaN(next)) {
                 evaluateBy(r, next);
             }
         }
         for (Robot r : group) {
-            if (r.isTouched()) {
-                r.pressTouched(time);
-                if (r.isTouched() && !r.isMoving()) {
-                    evaluateBy(r, r.nextTouch());
-                }
+            double next = contacts.pressTouched(r, time);
+            if (!Double.isNaN(next) && !r.isMoving()) {
+                evaluateBy(r, next);
             }
         }
         requeue();
-        world.changed(time);
+        changed.accept(time);
     }
 }

@@ -5,7 +5,6 @@ import java.util.Collections;
 import java.util.List;
 
 import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyContactSensor;
 import rp1.rossum.RsBodyPainter;
 import rp1.rossum.RsBodyPart;
 import rp1.rossum.RsBodySensor;
@@ -25,7 +24,9 @@ import rp1.rossum.request.RsPainterChangeRequest;
 /**
  * One client's robot in the world: its body, whether it is placed, its motion, the motion request
  * waiting to start, and its paint trails. The motion lifecycle of behavior.md section 5.4 lives here,
- * split into the phases the {@link MotionStepper} runs for the robots due at one time.
+ * split into the phases the {@link MotionStepper} runs for the robots due at one time. What the
+ * world's other parts need to remember about a robot (when it is next evaluated, where it is filed,
+ * its contact searches) they keep themselves, by its number.
  *
  * <p>Everything here runs on the thread running the simulation's tasks (see
  * {@link rp1.simulator.scheduler.Scheduler}); a placement request marks the robot unplaced when it is
@@ -44,20 +45,6 @@ public final class Robot {
     private RsMotionRequest pending;
     private boolean moving;
     private boolean placementEvaluation;
-    /** When the robot is next evaluated (NaN: not due); kept by the {@link MotionStepper}. */
-    private double nextEvaluation = Double.NaN;
-    /** The box the {@link RobotIndex} filed the robot under: x0, y0, x1, y1. */
-    private final double[] indexBox = new double[4];
-    private boolean indexed;
-    /**
-     * Contact sensors other robots ran into while this one stood still, each with the name of the robot
-     * and the time it stops, when the sensor is pressed; in the order the contacts were found.
-     */
-    private final List<Touch> touched = new ArrayList<>();
-    /** The motion task's run ({@link MotionStepper}) in which this robot's current motion started. */
-    private long motionStartedIn = -1;
-    /** The motion task's run in which this robot last searched for contacts ({@link RobotContacts}). */
-    private long searchedIn = -1;
 
     Robot(int number, RsBody body, EventSink events) {
         this.number = number;
@@ -98,35 +85,7 @@ public final class Robot {
         return m == null ? new RsTransform() : m.getPoseAtTime(time);
     }
 
-    double nextEvaluation() {
-        return nextEvaluation;
-    }
-
-    boolean isDue() {
-        return !Double.isNaN(nextEvaluation);
-    }
-
-    void setNextEvaluation(double time) {
-        nextEvaluation = time;
-    }
-
-    void clearNextEvaluation() {
-        nextEvaluation = Double.NaN;
-    }
-
-    double[] indexBox() {
-        return indexBox;
-    }
-
-    boolean isIndexed() {
-        return indexed;
-    }
-
-    void setIndexed(boolean indexed) {
-        this.indexed = indexed;
-    }
-
-    /** The order in which the robot joined the world, from 1. */
+    /** The order in which the robot joined the world, from 1 (dense: parts keep per-robot arrays by it). */
     public int getNumber() {
         return number;
     }
@@ -173,6 +132,15 @@ public final class Robot {
 
     RsMotion motion() {
         return body.getMotion();
+    }
+
+    /** Upper bound of the speed of any point of the robot's shapes under its current motion, m/s. */
+    double speedBound() {
+        RsMotion m = body.getMotion();
+        if (!moving || m == null) {
+            return 0.0;
+        }
+        return Math.abs(m.getVelocity()) + Math.abs(m.getTurnRate()) * shapes.reach();
     }
 
     /** The pose at the motion's current time (identity before the first placement). */
@@ -277,71 +245,6 @@ public final class Robot {
         return Double.NaN;
     }
 
-    /**
-     * Another robot ran into this one, which stands still: {@code sensors} touch it and go hot with its
-     * name at {@code time}, when the other robot has stopped. Added to those of any other robot that
-     * ran into this one before they were pressed.
-     */
-    void touchedAt(double time, List<RsBodyContactSensor> sensors, String name) {
-        for (RsBodyContactSensor s : sensors) {
-            touched.add(new Touch(s, name, time));
-        }
-    }
-
-    /** Whether contact sensors are waiting to be pressed by a robot that ran into this one. */
-    boolean isTouched() {
-        return !touched.isEmpty();
-    }
-
-    /** The earliest time contact sensors wait to be pressed at (only when {@link #isTouched()}). */
-    double nextTouch() {
-        double first = Double.POSITIVE_INFINITY;
-        for (Touch t : touched) {
-            first = Math.min(first, t.time);
-        }
-        return first;
-    }
-
-    /**
-     * Presses the contact sensors other robots ran into whose time has come by {@code time}: those not
-     * hot yet go hot with the name of the robot touching them (the earliest, if several; one event
-     * each, in part order). They are released as any contact sensor, when this robot next starts a
-     * motion. Sensors whose robot stops later keep waiting.
-     */
-    void pressTouched(double time) {
-        for (RsBodySensor s : body.getBodySensorArray()) {
-            Touch first = null;
-            for (Touch t : touched) {
-                if (t.sensor == s && t.time <= time && (first == null || t.time < first.time)) {
-                    first = t;
-                }
-            }
-            if (first != null && !s.getHot()) {
-                RsBodyContactSensor c = first.sensor;
-                c.setCollision(true, first.by);
-                c.setHot(true);
-                events.sendIfSubscribed(c.getStateChangeEvent(time));
-            }
-        }
-        touched.removeIf(t -> t.time <= time);
-    }
-
-    long motionStartedIn() {
-        return motionStartedIn;
-    }
-
-    void setMotionStartedIn(long run) {
-        motionStartedIn = run;
-    }
-
-    long searchedIn() {
-        return searchedIn;
-    }
-
-    void setSearchedIn(long run) {
-        searchedIn = run;
-    }
-
     /** A halt request: any waiting request is dropped and a motion under way stops at {@code time}. */
     void halt(double time) {
         pending = null;
@@ -420,19 +323,6 @@ public final class Robot {
     /** The robot's shapes at {@code pose}, as walls other robots sense and are placed against. */
     RsWall[] obstaclesAt(RsTransform pose) {
         return shapes.asWalls(pose, label);
-    }
-
-    /** A contact sensor another robot ran into, pressed with its name at the time it stops. */
-    private static final class Touch {
-        final RsBodyContactSensor sensor;
-        final String by;
-        final double time;
-
-        Touch(RsBodyContactSensor sensor, String by, double time) {
-            this.sensor = sensor;
-            this.by = by;
-            this.time = time;
-        }
     }
 
     @Override

@@ -1,6 +1,7 @@
 package rp1.simulator.world;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 import rp1.rossum.RsBodyContactSensor;
@@ -12,13 +13,16 @@ import rp1.rossum.RsTransform;
  * Robots meeting robots (beyond RP1 0.60, where robots passed through each other). Walls are known in
  * advance, so a motion is cut before the first wall analytically when it starts; other robots move,
  * so at every motion step the coming interval is searched for the first time two robots touch. Only
- * pairs that can meet in the interval are looked at ({@link RobotIndex}). Both poses are analytic:
+ * pairs that can meet in the interval are looked at ({@link Surroundings}). Both poses are analytic:
  * while two robots are far apart the search advances by the time they need at least to close the gap
  * (their distance over their speeds), then samples finely enough that neither body can pass through
  * the other between samples (robots are bodies of at least a few centimetres), then narrows the
  * contact down by bisection. Each robot that was moving stops at the last whole millisecond before
  * contact, its motion marked as ended by collision; the contact sensors of either robot that touch the
  * other at the moment of contact go hot with its name.
+ *
+ * <p>It keeps, by robot number, in which run of the motion task each robot's motion started and it
+ * last searched, to search each pair of moving robots once.
  */
 final class RobotContacts {
     /** Largest relative displacement between samples, metres. */
@@ -37,7 +41,48 @@ final class RobotContacts {
      */
     private static final double TOUCHING = 1.0e-3;
 
-    private RobotContacts() {
+    private final Surroundings surroundings;
+    /** By robot number: the motion task's run in which the robot's current motion started (-1: none). */
+    private long[] startedIn = new long[0];
+    /** By robot number: the motion task's run in which the robot last searched for contacts (-1: never). */
+    private long[] searchedIn = new long[0];
+    private final Touches touches = new Touches();
+
+    RobotContacts(Surroundings surroundings) {
+        this.surroundings = surroundings;
+    }
+
+    /** The robot's motion started in the motion task's run {@code run}. */
+    void motionStarted(Robot r, long run) {
+        int n = room(r);
+        startedIn[n] = run;
+    }
+
+    /**
+     * Presses the robot's contact sensors that robots which ran into it while it stood still touch, if
+     * their time has come by {@code time}.
+     *
+     * @return the earliest time sensors still wait to be pressed at, or NaN if none wait
+     */
+    double pressTouched(Robot r, double time) {
+        return touches.press(r, time);
+    }
+
+    /**
+     * The robot's number, once the bookkeeping has room for it (call it before reading the arrays,
+     * which it may replace).
+     */
+    private int room(Robot r) {
+        int n = r.getNumber();
+        if (n >= startedIn.length) {
+            int length = Math.max(n + 1, 2 * startedIn.length);
+            int old = startedIn.length;
+            startedIn = Arrays.copyOf(startedIn, length);
+            searchedIn = Arrays.copyOf(searchedIn, length);
+            Arrays.fill(startedIn, old, length, -1L);
+            Arrays.fill(searchedIn, old, length, -1L);
+        }
+        return n;
     }
 
     /**
@@ -52,16 +97,16 @@ final class RobotContacts {
      *
      * @param run the motion task's run under way (motions started in it precede every search in it)
      */
-    static void resolve(List<Robot> evaluated, RobotIndex index, double from, double to, long run,
-                        MotionStepper stepper) {
+    void resolve(List<Robot> evaluated, double from, double to, long run, MotionStepper stepper) {
         for (Robot a : evaluated) {
             if (!a.isMoving() || a.shapes().isEmpty()) {
                 continue;
             }
-            a.setSearchedIn(run);
-            double reach = a.shapes().reach() + RobotIndex.speedBound(a) * (to - from) + SAMPLE_SPACING;
+            int n = room(a);
+            searchedIn[n] = run;
+            double reach = a.shapes().reach() + a.speedBound() * (to - from) + SAMPLE_SPACING;
             RsTransform p = a.poseAt(from);
-            for (Robot b : index.near(p.m13 - reach, p.m23 - reach, p.m13 + reach, p.m23 + reach)) {
+            for (Robot b : surroundings.robotsNear(p.m13 - reach, p.m23 - reach, p.m13 + reach, p.m23 + reach)) {
                 if (b == a || coveredBy(b, a)) {
                     continue;
                 }
@@ -71,13 +116,16 @@ final class RobotContacts {
         }
     }
 
-    /** Whether moving robot {@code b}'s own searches already cover the pair for {@code a}. */
-    private static boolean coveredBy(Robot b, Robot a) {
-        return b.isMoving() && b.getNumber() < a.getNumber() && b.searchedIn() >= a.motionStartedIn();
+    /**
+     * Whether moving robot {@code b}'s own searches already cover the pair for {@code a} (which is
+     * searching, so the bookkeeping has room for it and for {@code b}, numbered before it).
+     */
+    private boolean coveredBy(Robot b, Robot a) {
+        return b.isMoving() && b.getNumber() < a.getNumber() && searchedIn[b.getNumber()] >= startedIn[a.getNumber()];
     }
 
-    private static void resolvePair(Robot a, Robot b, double from, double to, MotionStepper stepper) {
-        double speed = RobotIndex.speedBound(a) + RobotIndex.speedBound(b);
+    private void resolvePair(Robot a, Robot b, double from, double to, MotionStepper stepper) {
+        double speed = a.speedBound() + b.speedBound();
         if (speed <= 0.0) {
             return;
         }
@@ -157,7 +205,7 @@ final class RobotContacts {
      * sensors of both that touch the other robot go hot with its name: a stopped robot's when its
      * motion ends, a robot at rest's at the time the other one stops.
      */
-    private static void stop(Robot a, Robot b, double contact, double now, MotionStepper stepper) {
+    private void stop(Robot a, Robot b, double contact, double now, MotionStepper stepper) {
         List<RsBodyContactSensor> touchingA = touching(a, b, contact);
         List<RsBodyContactSensor> touchingB = touching(b, a, contact);
         double stopA = stopOne(a, contact, now);
@@ -203,7 +251,7 @@ final class RobotContacts {
      * A robot that was stopped has exactly its touching sensors flagged, to go hot when its motion ends;
      * one at rest has them pressed when the other robot has stopped.
      */
-    private static void press(Robot r, Robot other, List<RsBodyContactSensor> touching, double ownStop, double otherStop,
+    private void press(Robot r, Robot other, List<RsBodyContactSensor> touching, double ownStop, double otherStop,
                               MotionStepper stepper) {
         if (!Double.isNaN(ownStop)) {
             stepper.evaluateBy(r, ownStop);
@@ -214,7 +262,7 @@ final class RobotContacts {
                 }
             }
         } else if (!touching.isEmpty() && !Double.isNaN(otherStop)) {
-            r.touchedAt(otherStop, touching, other.getLabel());
+            touches.add(r, otherStop, touching, other.getLabel());
             stepper.evaluateBy(r, otherStop);
         }
     }

@@ -1,7 +1,5 @@
 package rp1.simulator.world;
 
-import java.util.Arrays;
-
 import rp1.rossum.RsRectangle;
 import rp1.rossum.RsWall;
 
@@ -13,13 +11,9 @@ import rp1.rossum.RsWall;
 final class WallIndex {
     /** Plans with at most this many walls are searched whole. */
     private static final int SMALL = 24;
-    private static final double CELL = 1.0;
-    private static final int MAX_CELLS = 1 << 16;
 
     private final RsWall[] walls;
     private final Grid grid;
-    private int[] found = new int[32];
-    private int foundCount;
 
     WallIndex(RsWall[] walls) {
         this.walls = walls;
@@ -31,7 +25,7 @@ final class WallIndex {
         for (RsWall w : walls) {
             area.union(w.getBounds());
         }
-        grid = new Grid(area, CELL, MAX_CELLS);
+        grid = Grid.forIndex(area);
         for (int i = 0; i < walls.length; i++) {
             RsRectangle b = walls[i].getBounds();
             grid.insert(i, b.x, b.y, b.x + b.width, b.y + b.height);
@@ -40,36 +34,18 @@ final class WallIndex {
 
     /** The walls whose boxes come near the box [x0, x1] x [y0, y1] (every wall of a small plan). */
     RsWall[] near(double x0, double y0, double x1, double y1) {
-        if (grid == null) {
-            return walls;
-        }
-        foundCount = 0;
-        grid.query(x0, y0, x1, y1, this::found);
-        return collected();
+        return grid == null ? walls : collected(grid.collect(x0, y0, x1, y1));
     }
 
     /** The walls within {@code radius} of the segment (every wall of a small plan). */
     RsWall[] alongSegment(double x0, double y0, double x1, double y1, double radius) {
-        if (grid == null) {
-            return walls;
-        }
-        foundCount = 0;
-        grid.querySegment(x0, y0, x1, y1, radius, this::found);
-        return collected();
+        return grid == null ? walls : collected(grid.collectAlongSegment(x0, y0, x1, y1, radius));
     }
 
-    private void found(int id) {
-        if (foundCount == found.length) {
-            found = Arrays.copyOf(found, foundCount * 2);
-        }
-        found[foundCount++] = id;
-    }
-
-    private RsWall[] collected() {
-        Arrays.sort(found, 0, foundCount);
-        RsWall[] out = new RsWall[foundCount];
-        for (int i = 0; i < foundCount; i++) {
-            out[i] = walls[found[i]];
+    private RsWall[] collected(int count) {
+        RsWall[] out = new RsWall[count];
+        for (int i = 0; i < count; i++) {
+            out[i] = walls[grid.hit(i)];
         }
         return out;
     }

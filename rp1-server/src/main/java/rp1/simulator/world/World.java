@@ -1,6 +1,5 @@
 package rp1.simulator.world;
 
-import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Random;
@@ -8,11 +7,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.IntConsumer;
 
 import rp1.rossum.RsBody;
-import rp1.rossum.RsPlacement;
 import rp1.rossum.RsPlan;
-import rp1.rossum.RsRectangle;
-import rp1.rossum.RsTransform;
-import rp1.rossum.RsWall;
 import rp1.rossum.event.RsPlacementEvent;
 import rp1.rossum.event.RsTargetSelectionEvent;
 import rp1.rossum.request.RsMotionRequest;
@@ -30,36 +25,21 @@ import rp1.simulator.scheduler.Scheduler;
  * <p>All changes happen on the thread running the simulation's tasks: in tasks, or in client
  * requests applied at the boundaries between tasks (see {@link rp1.simulator.scheduler.Scheduler}).
  * The robot list may be read from other threads (it is copy-on-write); a view takes snapshots instead.
+ *
+ * <p>The world applies what clients ask for and tells its listeners; the work is done by its parts:
+ * {@link Placements} (where a robot may stand), {@link MotionStepper} (motion evaluation, with
+ * {@link RobotContacts}) and {@link Surroundings} (what is near a place, for all of them).
  */
 public final class World {
-    /** Random poses ("$random") are drawn this many times before the placement fails. */
-    static final int RANDOM_PLACEMENT_ATTEMPTS = 50;
-    /** Margin, metres, around a robot's reach when looking for what it could touch (beyond the 1e-4 m of the clear test). */
-    private static final double NEAR = 0.01;
-    /*
-     * How the body turns a request into a motion (docs/behavior.md section 5.2), as the client library's
-     * MotionRequests does it: the walls offered to the motion's search must be those of the motion it
-     * will actually compute, so these limits must be exactly that class's. A turn rate just under
-     * 0.1 degree per second drives straight, and a wall beyond the arc's circle must not be left out.
-     */
-    /** Durations, speeds and turn rates below this make a null motion. */
-    private static final double NULL_LIMIT = 1.0e-4;
-    /** Below this turn rate, rad/s (0.1 degree per second), a motion is a straight line. */
-    private static final double STRAIGHT = 0.1 * Math.PI / 180.0;
-    private static final RsWall[] NO_WALLS = new RsWall[0];
-
     private final RsPlan plan;
-    private final WallIndex wallIndex;
-    private final RobotIndex robotIndex;
-    private final Random random;
+    private final Surroundings surroundings;
+    private final Placements placements;
     private final MotionStepper stepper;
     private final List<Robot> robots = new CopyOnWriteArrayList<>();
     private final List<WorldListener> listeners = new CopyOnWriteArrayList<>();
     private final List<PaintTrail> departedTrails = new CopyOnWriteArrayList<>();
-    private final boolean robotsInteract;
     private IntConsumer placementListener = n -> { };
     private int joined;
-    private int placedCount;
 
     /**
      * @param plan           the floor plan
@@ -70,11 +50,9 @@ public final class World {
      */
     public World(RsPlan plan, Scheduler scheduler, double interval, Random random, boolean robotsInteract) {
         this.plan = plan;
-        this.wallIndex = new WallIndex(plan.getWallArray());
-        this.robotIndex = new RobotIndex(plan.getBounds());
-        this.random = random;
-        this.robotsInteract = robotsInteract;
-        this.stepper = new MotionStepper(this, scheduler, interval);
+        this.surroundings = new Surroundings(plan.getWallArray(), plan.getBounds(), robotsInteract);
+        this.placements = new Placements(plan, random, surroundings);
+        this.stepper = new MotionStepper(scheduler, interval, plan, surroundings, this::changed);
         plan.setRandom(random);
     }
 
@@ -94,14 +72,12 @@ public final class World {
         }
         if (placed) {
             r.markPlaced();
-            placedCount++;
-            robotIndex.put(r, r.motion().time, 0.0);
+            surroundings.enter(r, r.motion().time);
         } else {
             r.markUnplaced();
-            placedCount--;
-            robotIndex.remove(r);
+            surroundings.leave(r);
         }
-        placementListener.accept(placedCount);
+        placementListener.accept(surroundings.onFloor());
     }
 
     /** A placement request arrived: the robot is off the floor until the placement succeeds. */
@@ -163,7 +139,7 @@ public final class World {
      */
     public String place(Robot r, String name, double time) {
         String requested = name == null ? "" : name;
-        Placement found = findPlacement(r, requested, time);
+        Placements.Placement found = placements.find(r, requested, time);
         RsPlacementEvent event = found.event();
         if (event.valid) {
             r.place(time, event.x, event.y, event.orientation);
@@ -175,192 +151,6 @@ public final class World {
         r.events().send(event);
         changed(time);
         return found.refusal();
-    }
-
-    /** The answer to a placement request, and why it was refused (null if it was not). */
-    private record Placement(RsPlacementEvent event, String refusal) {
-        static Placement at(double time, String name, double x, double y, double orientation) {
-            return new Placement(new RsPlacementEvent(time, true, name, x, y, orientation), null);
-        }
-
-        static Placement refused(double time, String name, String why) {
-            return new Placement(new RsPlacementEvent(time, false, name, 0.0, 0.0, 0.0), why);
-        }
-    }
-
-    private Placement findPlacement(Robot r, String requested, double time) {
-        if (plan.getObjectCount() == 0) {
-            return Placement.refused(time, "", "the floor plan is empty");
-        }
-        if (requested.equals("$random")) {
-            return randomPose(r, time);
-        }
-        if (requested.isEmpty()) {
-            return randomPlacement(r, time);
-        }
-        for (RsPlacement p : plan.getPlacementArray()) {
-            if (p.getName().equals(requested)) {
-                String blocked = blockedBy(r, p.x, p.y, p.orientation, time);
-                return blocked == null ? Placement.at(time, p.getName(), p.x, p.y, p.orientation)
-                        : Placement.refused(time, requested, blocked + " is in the way");
-            }
-        }
-        return Placement.refused(time, requested, "the floor plan has no placement of that name");
-    }
-
-    private Placement randomPose(Robot r, double time) {
-        RsRectangle b = plan.getBounds();
-        for (int i = 0; i < RANDOM_PLACEMENT_ATTEMPTS; i++) {
-            double x = b.x + random.nextDouble() * b.width;
-            double y = b.y + random.nextDouble() * b.height;
-            double theta = random.nextDouble() * 2.0 * Math.PI;
-            if (clear(r, x, y, theta, time)) {
-                return Placement.at(time, "$random", x, y, theta);
-            }
-        }
-        return Placement.refused(time, "$random", "no free pose found in " + RANDOM_PLACEMENT_ATTEMPTS + " tries");
-    }
-
-    private Placement randomPlacement(Robot r, double time) {
-        List<RsPlacement> candidates = new ArrayList<>();
-        Collections.addAll(candidates, plan.getPlacementArray());
-        boolean any = !candidates.isEmpty();
-        while (!candidates.isEmpty()) {
-            RsPlacement p = candidates.remove(random.nextInt(candidates.size()));
-            if (clear(r, p.x, p.y, p.orientation, time)) {
-                return Placement.at(time, p.getName(), p.x, p.y, p.orientation);
-            }
-        }
-        return Placement.refused(time, "", any ? "every placement of the floor plan is taken or blocked"
-                : "the floor plan has no placements");
-    }
-
-    /** What keeps the robot from standing at (x, y, theta): null if nothing, else "a wall" or "another robot". */
-    private String blockedBy(Robot r, double x, double y, double theta, double time) {
-        if (clear(r, x, y, theta, time)) {
-            return null;
-        }
-        return robotsInteract && clearOfWalls(r, x, y, theta) ? "another robot" : "a wall";
-    }
-
-    /**
-     * Whether the robot can stand at (x, y, theta): no wall, and (if robots interact) no other robot on
-     * the floor, overlaps or comes within 1e-4 m of it. Only what is near the pose is looked at.
-     */
-    private boolean clear(Robot r, double x, double y, double theta, double time) {
-        if (r.shapes().isEmpty()) {
-            return true;
-        }
-        double reach = r.shapes().reach() + NEAR;
-        RsWall[] nearWalls = wallIndex.near(x - reach, y - reach, x + reach, y + reach);
-        RsWall[] obstacles = robotsInteract ? withRobots(nearWalls, shapesOfRobotsNear(r, x, y, reach, time)) : nearWalls;
-        return !r.getBody().checkForOverlap(obstacles, new RsTransform(theta, x, y));
-    }
-
-    /** Whether the robot at (x, y, theta) overlaps no wall, whatever the other robots do. */
-    private boolean clearOfWalls(Robot r, double x, double y, double theta) {
-        double reach = r.shapes().reach() + NEAR;
-        RsWall[] nearWalls = wallIndex.near(x - reach, y - reach, x + reach, y + reach);
-        return !r.getBody().checkForOverlap(nearWalls, new RsTransform(theta, x, y));
-    }
-
-    /**
-     * The shapes, as walls, of the other robots on the floor whose reach comes within {@code reach} of
-     * (x, y), in joining order (the index holds only robots on the floor).
-     */
-    private List<RsWall[]> shapesOfRobotsNear(Robot self, double x, double y, double reach, double time) {
-        List<RsWall[]> near = new ArrayList<>();
-        for (Robot o : robotIndex.near(x - reach, y - reach, x + reach, y + reach)) {
-            if (o != self) {
-                RsTransform p = o.poseAt(time);
-                if (Math.hypot(p.m13 - x, p.m23 - y) <= reach + o.shapes().reach()) {
-                    near.add(o.obstaclesAt(p));
-                }
-            }
-        }
-        return near;
-    }
-
-    /**
-     * At a motion evaluation: searches the coming interval [from, to] for contacts between the robots
-     * evaluated and the robots near them (if robots interact).
-     */
-    void searchContacts(List<Robot> evaluated, double from, double to, long run) {
-        if (robotsInteract && placedCount > 1) {
-            RobotContacts.resolve(evaluated, robotIndex, from, to, run, stepper);
-        }
-    }
-
-    /** Files an evaluated robot in the index where it can be until it is evaluated again (and an interval more). */
-    void indexRobot(Robot r, double time, double interval) {
-        if (r.isPlaced()) {
-            robotIndex.put(r, time, r.isMoving() ? 2 * interval + RobotContacts.LOOK_AHEAD : 0.0);
-        }
-    }
-
-    /**
-     * What blocks the robot's range and target sensors at {@code time}: the walls within the sensors'
-     * reach, plus the other robots on the floor within it. A robot without such sensors needs none.
-     */
-    RsWall[] obstaclesFor(Robot r, double time) {
-        if (!r.hasWallSensors()) {
-            return NO_WALLS;
-        }
-        RsTransform p = r.pose();
-        double reach = r.sensorReach();
-        double x0 = p.m13 - reach;
-        double y0 = p.m23 - reach;
-        double x1 = p.m13 + reach;
-        double y1 = p.m23 + reach;
-        RsWall[] nearWalls = wallIndex.near(x0, y0, x1, y1);
-        if (!robotsInteract || placedCount < 2) {
-            return nearWalls;
-        }
-        List<RsWall[]> seen = new ArrayList<>();
-        for (Robot o : robotIndex.near(x0, y0, x1, y1)) {
-            if (o != r) {
-                RsTransform b = o.poseAt(time);
-                if (r.mightSee(p, o, b)) {
-                    seen.add(o.obstaclesAt(b));
-                }
-            }
-        }
-        return seen.isEmpty() ? nearWalls : withRobots(nearWalls, seen);
-    }
-
-    /**
-     * The walls a motion requested from the robot's current pose could meet (docs/behavior.md section
-     * 5.2): along the line it would drive, or within the circle of an arc; none for a null motion.
-     */
-    RsWall[] wallsForMotion(Robot r, RsMotionRequest q) {
-        double v = q.linearVelocity;
-        double w = q.rotationalVelocity;
-        if (q.duration < NULL_LIMIT || (Math.abs(v) < NULL_LIMIT && Math.abs(w) < NULL_LIMIT)) {
-            return NO_WALLS;
-        }
-        RsTransform p = r.pose();
-        double theta = p.getTheta();
-        double reach = r.shapes().reach() + NEAR;
-        if (Math.abs(w) < STRAIGHT) {
-            double d = Math.abs(v * q.duration);
-            double heading = v < 0 ? theta + Math.PI : theta;
-            return wallIndex.alongSegment(p.m13, p.m23, p.m13 + d * Math.cos(heading), p.m23 + d * Math.sin(heading), reach);
-        }
-        double rho = Math.abs(v / w) * Math.signum(w);
-        double cx = p.m13 - rho * Math.sin(theta);
-        double cy = p.m23 + rho * Math.cos(theta);
-        double radius = Math.abs(rho) + reach;
-        return wallIndex.near(cx - radius, cy - radius, cx + radius, cy + radius);
-    }
-
-    /** The walls followed by the other robots' shapes (as walls), in order. */
-    private static RsWall[] withRobots(RsWall[] walls, List<RsWall[]> others) {
-        List<RsWall> all = new ArrayList<>(walls.length + 4 * others.size());
-        Collections.addAll(all, walls);
-        for (RsWall[] o : others) {
-            Collections.addAll(all, o);
-        }
-        return all.toArray(new RsWall[0]);
     }
 
     /**

@@ -4,9 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,8 +28,7 @@ import rp1.simulator.launch.JavaCommand;
 class InterruptedSweepTest {
     @TempDir
     Path dir;
-    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
-    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+    private final InProcessSweep sweeps = new InProcessSweep();
 
     /** Runs of a simulated second at real speed: each takes a second or two of wall time. */
     private String[] sweep(String seeds, String... more) throws IOException {
@@ -47,8 +44,7 @@ class InterruptedSweepTest {
     }
 
     private int inProcess(String... args) {
-        return Sweep.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8), false);
+        return sweeps.run(args);
     }
 
     private List<String> rows() throws IOException {
@@ -82,34 +78,35 @@ class InterruptedSweepTest {
                 + " --resume to the same command:\n  rp1.Sweep " + String.join(" ", args) + " --resume"), said);
         List<String> rows = rows();
         assertEquals(2, rows.size(), rows.toString());
-        assertTrue(rows.get(1).startsWith("1," + dir.resolve("home.txt") + ",,1.0,max-simulation-time,0,"), rows.get(1));
+        assertTrue(rows.get(1).startsWith("1," + dir.resolve("home.txt") + ",runs/1-home,") && rows.get(1)
+                .contains(",0,max-simulation-time,"), rows.get(1));
         assertTrue(Files.exists(dir.resolve("out/summary.png")));
         assertTrue(Files.readString(second.resolve("recording.txt")).contains("\nend "),
                 "the run that was stopped closed its recording");
         assertFalse(Files.exists(dir.resolve("out/runs/3-home")), "no run was started after the signal");
 
         FileTime firstRun = Files.getLastModifiedTime(dir.resolve("out/runs/1-home/" + RunReport.FILE));
-        assertEquals(0, inProcess(sweep("1-4", "--resume")), out.toString() + err);
-        assertTrue(out.toString(StandardCharsets.UTF_8).contains("; 1 finished before, 3 to run"), out.toString());
+        assertEquals(0, inProcess(sweep("1-4", "--resume")), sweeps.out() + sweeps.err());
+        assertTrue(sweeps.out().contains("; 1 finished before, 3 to run"), sweeps.out());
         assertEquals(firstRun, Files.getLastModifiedTime(dir.resolve("out/runs/1-home/" + RunReport.FILE)),
                 "the run that had finished was not run again");
         rows = rows();
         assertEquals(5, rows.size(), rows.toString());
         for (int seed = 1; seed <= 4; seed++) {
-            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",,1.0,max-simulation-time,0,"),
-                    rows.get(seed));
+            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",runs/" + seed + "-home,")
+                    && rows.get(seed).contains(",0,max-simulation-time,"), rows.get(seed));
         }
     }
 
     @Test
     void resumeRefusesAFolderOfAnotherSweepSayingWhatDiffers() throws Exception {
-        assertEquals(0, inProcess(sweep("1")), out.toString() + err);
+        assertEquals(0, inProcess(sweep("1")), sweeps.out() + sweeps.err());
         List<String> before = rows();
 
         assertEquals(1, inProcess(sweep("1-2", "--resume")));
         assertEquals("rp1.Sweep: --resume: " + dir.resolve("out") + " holds another sweep (sweep.ini): the seeds"
                 + " (--seeds): 1 there, 1,2 here. Resume it with its own options, or give another --out\n",
-                err.toString(StandardCharsets.UTF_8));
+                sweeps.err());
         assertEquals(before, rows(), "nothing was run");
     }
 
@@ -118,6 +115,6 @@ class InterruptedSweepTest {
         Files.createDirectories(dir.resolve("out"));
         assertEquals(1, inProcess(sweep("1", "--resume")));
         assertEquals("rp1.Sweep: --resume: " + dir.resolve("out") + " holds no sweep to go on with (it has no"
-                + " sweep.ini)\n", err.toString(StandardCharsets.UTF_8));
+                + " sweep.ini)\n", sweeps.err());
     }
 }

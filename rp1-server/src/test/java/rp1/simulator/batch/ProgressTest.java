@@ -8,6 +8,7 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Paths;
 import java.util.List;
+import java.util.Map;
 
 import org.junit.jupiter.api.Test;
 
@@ -17,7 +18,7 @@ class ProgressTest {
     private final PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
 
     private static Batch.Outcome outcome(long seed, RunReport report) {
-        return new Batch.Outcome(new Batch.Run(seed, "contest.txt", Paths.get("runs", seed + "-contest")), report, 1.25,
+        return new Batch.Outcome(new Batch.Run(Map.of(), seed, "contest.txt", Paths.get("runs", seed + "-contest")), report, 1.25,
                 List.of());
     }
 

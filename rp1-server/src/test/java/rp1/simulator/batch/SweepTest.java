@@ -4,9 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -23,12 +21,10 @@ import rp1.Sweep;
 class SweepTest {
     @TempDir
     Path dir;
-    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
-    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+    private final InProcessSweep sweeps = new InProcessSweep();
 
     private int sweep(String... args) {
-        return Sweep.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8), false);
+        return sweeps.run(args);
     }
 
     private Path write(String name, String... lines) throws IOException {
@@ -55,7 +51,7 @@ class SweepTest {
         assertEquals(1, sweep("-p", p.toString(), "--seeds", "1-2", "--out", dir.resolve("out").toString()));
         assertEquals("rp1.Sweep: " + p + ": neither maxSimulationTime nor exitWhenClientsDone is set, so a run might"
                 + " never end: set maxSimulationTime=SECONDS (or exitWhenClientsDone=true)\n",
-                err.toString(StandardCharsets.UTF_8));
+                sweeps.err());
         assertTrue(Files.notExists(dir.resolve("out")), "nothing was run");
     }
 
@@ -63,8 +59,8 @@ class SweepTest {
     void propertiesThatLoadNoRobotAreRefused() throws Exception {
         Path p = write("none.ini", "floorPlanFileName=" + dir.resolve("x.txt"), "maxSimulationTime=10");
         assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--out", dir.resolve("out").toString()));
-        assertTrue(err.toString(StandardCharsets.UTF_8).contains("no robot is loaded: set dlcEnabled=true and"
-                + " dlcName=CLASS"), err.toString(StandardCharsets.UTF_8));
+        assertTrue(sweeps.err().contains("no robot is loaded: set dlcEnabled=true and"
+                + " dlcName=CLASS"), sweeps.err());
     }
 
     @Test
@@ -72,15 +68,16 @@ class SweepTest {
         Path p = properties("exitWhenClientsDone=true", "maxSimulationTime=30");
         int status = sweep("-p", p.toString(), "--seeds", "5", "--plans", dir.resolve("bare.txt") + ","
                 + dir.resolve("home.txt"), "--jobs", "2", "--out", dir.resolve("out").toString());
-        assertEquals(Sweep.RUN_FAILED, status, out.toString(StandardCharsets.UTF_8) + err);
+        assertEquals(Sweep.RUN_FAILED, status, sweeps.out() + sweeps.err());
         List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
-        assertEquals(ResultsCsv.HEADER, rows.get(0));
+        assertEquals("seed,plan,run,robot,start_x,start_y,start_heading,end_x,end_y,end_heading,end_time,distance,"
+                + "collisions,first_collision_time,events,status,reason,wall_seconds", rows.get(0));
         assertEquals(3, rows.size(), rows.toString());
-        assertTrue(rows.get(1).startsWith("5," + dir.resolve("bare.txt") + ",picky,0.0,\"client failed: client "
-                + PickyDlc.class.getName() + ": a handler failed: java.lang.Error: no placement \"\"home\"\" on this"
-                + " floor plan\",2,"), rows.get(1));
-        assertTrue(rows.get(2).startsWith("5," + dir.resolve("home.txt") + ",picky,0.0,clients-done,0,1.0,1.0,0.0,0.0,0,1,"),
-                rows.get(2));
+        assertTrue(rows.get(1).startsWith("5," + dir.resolve("bare.txt") + ",runs/5-bare,picky,,,,,,,0,0,0,,1,2,"
+                + "\"client failed: client " + PickyDlc.class.getName() + ": a handler failed: java.lang.Error: no"
+                + " placement \"\"home\"\" on this floor plan\","), rows.get(1));
+        assertTrue(rows.get(2).startsWith("5," + dir.resolve("home.txt") + ",runs/5-home,picky,1,1,0,1,1,0,0,0,0,,1,0,"
+                + "clients-done,"), rows.get(2));
         assertTrue(Files.exists(dir.resolve("out/runs/5-home/recording.txt")));
         assertTrue(Files.exists(dir.resolve("out/summary.png")));
     }
@@ -89,10 +86,10 @@ class SweepTest {
     void aRunThatOutlivesItsTimeoutIsStoppedAndIsARowWithItsReason() throws Exception {
         Path p = properties("exitWhenClientsDone=true", "dlcName=" + SleepyDlc.class.getName());
         int status = sweep("-p", p.toString(), "--seeds", "2", "--timeout", "2", "--out", dir.resolve("out").toString());
-        assertEquals(Sweep.RUN_FAILED, status, out.toString(StandardCharsets.UTF_8) + err);
+        assertEquals(Sweep.RUN_FAILED, status, sweeps.out() + sweeps.err());
         List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
-        assertTrue(rows.get(1).startsWith("2," + dir.resolve("home.txt") + ",,,timeout: still running after 2 s of"
-                + " wall time,"), rows.get(1));
+        assertTrue(rows.get(1).startsWith("2," + dir.resolve("home.txt") + ",runs/2-home,"), rows.get(1));
+        assertTrue(rows.get(1).contains(",124,timeout: still running after 2 s of wall time,"), rows.get(1));
     }
 
     @Test

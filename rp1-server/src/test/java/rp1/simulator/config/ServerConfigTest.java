@@ -230,4 +230,14 @@ class ServerConfigTest {
         assertTrue(ServerArguments.parse(new String[] {"--help"}).help);
         assertFalse(ServerArguments.parse(new String[] {"-p", "a.ini"}).help);
     }
+
+    @Test
+    void paramKeysAreTheRobotsParametersByNameWhateverTheName() throws ConfigException {
+        ServerConfig c = config("floorPlanFileName=WhiteRoom.txt\nparam.speed=0.3  # m/s\nparam.goal.x=2\n");
+        assertEquals(Map.of("speed", "0.3", "goal.x", "2"), c.parameters);
+        assertTrue(ServerConfig.isParameter("param.anything"));
+        assertFalse(ServerConfig.isParameter("param."));
+        assertEquals("test.ini: param.=1: a parameter needs a name after param.",
+                assertThrows(ConfigException.class, () -> config("floorPlanFileName=WhiteRoom.txt\nparam.=1\n")).getMessage());
+    }
 }

@@ -62,6 +62,25 @@ class GridTest {
                 Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY));
     }
 
+    /** The indexes answer in item order (plan order, joining order) whatever the cells visited first. */
+    @Test
+    void aCollectionHoldsEachItemOnceInAscendingOrderHoweverManyCellsItSpans() {
+        Grid grid = Grid.forIndex(new RsRectangle(0, 0, 10, 10));
+        for (int id = 40; id >= 0; id--) {
+            grid.insert(id, 9.5 - id * 0.2, 0.5, 9.6, 0.5 + id * 0.2);
+        }
+        int count = grid.collect(0, 0, 10, 10);
+        List<Integer> found = new ArrayList<>();
+        for (int i = 0; i < count; i++) {
+            found.add(grid.hit(i));
+        }
+        List<Integer> expected = new ArrayList<>();
+        for (int id = 0; id <= 40; id++) {
+            expected.add(id);
+        }
+        assertEquals(expected, found);
+    }
+
     @Test
     void anAreaThatIsNotFiniteIsRefusedSayingSo() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,

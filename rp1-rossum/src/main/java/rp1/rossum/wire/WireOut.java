@@ -1,4 +1,4 @@
-package rp1.rossum;
+package rp1.rossum.wire;
 
 import java.awt.Color;
 import java.io.ByteArrayOutputStream;
@@ -13,11 +13,12 @@ import java.io.UncheckedIOException;
  * whole, so an encoding failure (an over-long string, an unencodable part) can never leave half a
  * message in the stream, and concurrent senders never interleave bytes.
  */
-final class WireOut {
+public final class WireOut {
     private final ByteArrayOutputStream bytes = new ByteArrayOutputStream(128);
     private final DataOutputStream out = new DataOutputStream(bytes);
 
-    WireOut i32(int v) {
+    /** Appends an I32 (big-endian). */
+    public WireOut i32(int v) {
         try {
             out.writeInt(v);
         } catch (IOException e) {
@@ -26,7 +27,8 @@ final class WireOut {
         return this;
     }
 
-    WireOut f64(double v) {
+    /** Appends an F64 (IEEE 754, big-endian). */
+    public WireOut f64(double v) {
         try {
             out.writeDouble(v);
         } catch (IOException e) {
@@ -35,7 +37,8 @@ final class WireOut {
         return this;
     }
 
-    WireOut bool(boolean v) {
+    /** Appends a BOOL: one byte, 1 or 0. */
+    public WireOut bool(boolean v) {
         try {
             out.writeBoolean(v);
         } catch (IOException e) {
@@ -49,7 +52,7 @@ final class WireOut {
      *
      * @throws IllegalArgumentException if the text needs more than 65535 bytes of modified UTF-8
      */
-    WireOut str(String s) {
+    public WireOut str(String s) {
         try {
             out.writeUTF(s == null ? "" : s);
         } catch (UTFDataFormatException e) {
@@ -62,7 +65,7 @@ final class WireOut {
     }
 
     /** A COLOR: 0 for null, else 1 and the red, green and blue components. */
-    WireOut color(Color c) {
+    public WireOut color(Color c) {
         if (c == null) {
             return i32(0);
         }
@@ -70,7 +73,7 @@ final class WireOut {
     }
 
     /** A COLOR_ARRAY: 0 for null or empty, else the count and each COLOR. */
-    WireOut colorArray(Color[] colors) {
+    public WireOut colorArray(Color[] colors) {
         if (colors == null || colors.length == 0) {
             return i32(0);
         }
@@ -82,19 +85,22 @@ final class WireOut {
     }
 
     /** The 20-byte transaction header (protocol.md section 3). */
-    WireOut header(int clientId, int clientKey, int sequence, int transactionCode) {
-        return i32(RsProtocol.VERSION).i32(clientId).i32(clientKey).i32(sequence).i32(transactionCode);
+    public WireOut header(int clientId, int clientKey, int sequence, int transactionCode) {
+        return i32(WireCodes.VERSION).i32(clientId).i32(clientKey).i32(sequence).i32(transactionCode);
     }
 
-    int size() {
+    /** The bytes so far. */
+    public int size() {
         return bytes.size();
     }
 
-    byte[] toByteArray() {
+    /** A copy of the bytes so far. */
+    public byte[] toByteArray() {
         return bytes.toByteArray();
     }
 
-    void writeTo(OutputStream target) throws IOException {
+    /** Writes the bytes so far to {@code target}, unflushed. */
+    public void writeTo(OutputStream target) throws IOException {
         bytes.writeTo(target);
     }
 }

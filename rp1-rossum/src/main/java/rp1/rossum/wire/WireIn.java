@@ -1,4 +1,4 @@
-package rp1.rossum;
+package rp1.rossum.wire;
 
 import java.awt.Color;
 import java.io.ByteArrayInputStream;
@@ -7,24 +7,28 @@ import java.io.EOFException;
 import java.io.IOException;
 import java.io.UTFDataFormatException;
 
+import rp1.rossum.RsProtocolException;
+
 /**
  * Reads RP1 primitives (protocol.md section 2) field by field from a stream, naming each field so that
  * any failure becomes an {@link RsProtocolException} that says what was being read and what was seen.
  * Socket-free: tests feed it byte arrays.
  */
-final class WireIn {
+public final class WireIn {
     private final DataInputStream in;
 
-    WireIn(DataInputStream in) {
+    /** A reader of the messages on {@code in}. */
+    public WireIn(DataInputStream in) {
         this.in = in;
     }
 
     /** A reader over a byte array, for tests and for decoding captured messages. */
-    static WireIn of(byte[] bytes) {
+    public static WireIn of(byte[] bytes) {
         return new WireIn(new DataInputStream(new ByteArrayInputStream(bytes)));
     }
 
-    int i32(String field) throws IOException {
+    /** An I32 (big-endian); {@code field} names it if the bytes end first. */
+    public int i32(String field) throws IOException {
         try {
             return in.readInt();
         } catch (EOFException e) {
@@ -32,7 +36,8 @@ final class WireIn {
         }
     }
 
-    double f64(String field) throws IOException {
+    /** An F64 (IEEE 754, big-endian), any value; {@code field} names it if the bytes end first. */
+    public double f64(String field) throws IOException {
         try {
             return in.readDouble();
         } catch (EOFException e) {
@@ -44,7 +49,7 @@ final class WireIn {
      * An f64 that a client sends (a request's field, a body's dimension): NaN and the infinities are
      * refused, since one of them in a time, an interval or a velocity poisons the clock or a pose.
      */
-    double finite(String field) throws IOException {
+    public double finite(String field) throws IOException {
         double v = f64(field);
         if (!Double.isFinite(v)) {
             throw new RsProtocolException(field, v + " is not a finite number");
@@ -53,7 +58,7 @@ final class WireIn {
     }
 
     /** Any non-zero byte is true, as Java's DataInput reads it. */
-    boolean bool(String field) throws IOException {
+    public boolean bool(String field) throws IOException {
         try {
             return in.readBoolean();
         } catch (EOFException e) {
@@ -62,7 +67,7 @@ final class WireIn {
     }
 
     /** A STR: u16 byte count then modified UTF-8; never null. */
-    String str(String field) throws IOException {
+    public String str(String field) throws IOException {
         try {
             return in.readUTF();
         } catch (EOFException e) {
@@ -73,7 +78,7 @@ final class WireIn {
     }
 
     /** A non-negative i32 count no larger than {@code max}. */
-    int count(String field, int max) throws IOException {
+    public int count(String field, int max) throws IOException {
         int n = i32(field);
         if (n < 0 || n > max) {
             throw new RsProtocolException(field, n + " is outside the accepted range 0.." + max);
@@ -82,7 +87,7 @@ final class WireIn {
     }
 
     /** A COLOR: i32 presence flag (0 = null), then red, green, blue in 0..255. */
-    Color color(String field) throws IOException {
+    public Color color(String field) throws IOException {
         if (i32(field + " present") == 0) {
             return null;
         }
@@ -101,7 +106,7 @@ final class WireIn {
     }
 
     /** A COLOR_ARRAY: i32 count (0 = null), then that many COLORs. */
-    Color[] colorArray(String field) throws IOException {
+    public Color[] colorArray(String field) throws IOException {
         int n = count(field + " count", WireLimits.MAX_COLORS);
         if (n == 0) {
             return null;
@@ -117,7 +122,7 @@ final class WireIn {
      * Reads the first i32 of a message. A stream that ends before its first byte ended cleanly
      * between messages, which is reported as a plain {@link EOFException}, not a protocol violation.
      */
-    int firstI32(String field) throws IOException {
+    public int firstI32(String field) throws IOException {
         int b0 = in.read();
         if (b0 < 0) {
             throw new EOFException("connection closed by peer");

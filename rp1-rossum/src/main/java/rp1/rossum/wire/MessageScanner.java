@@ -1,4 +1,4 @@
-package rp1.rossum;
+package rp1.rossum.wire;
 
 import java.util.ArrayDeque;
 
@@ -18,7 +18,7 @@ import rp1.rossum.request.RsRequest;
  *
  * <p>Socket-free: {@link #scan} works on any byte array.
  */
-final class MessageScanner {
+public final class MessageScanner {
     /** What a value read from the wire decides about what follows it. */
     @FunctionalInterface
     private interface Then {
@@ -57,11 +57,11 @@ final class MessageScanner {
      * @return the message's length once it is whole (the scanner is then ready for the next one), or
      *         -1 while bytes are missing
      */
-    int scan(byte[] bytes, int start, int end, boolean introduced) {
+    public int scan(byte[] bytes, int start, int end, boolean introduced) {
         if (!started) {
             started = true;
             read(I32, version -> {
-                if (version != RsProtocol.VERSION) {
+                if (version != WireCodes.VERSION) {
                     end();
                 }
             });
@@ -99,12 +99,12 @@ final class MessageScanner {
     }
 
     /** Bytes of an unfinished message already scanned (0 between messages). */
-    int scanned() {
+    public int scanned() {
         return scanned;
     }
 
     /** Forgets the message being scanned (the session ended). */
-    void reset() {
+    public void reset() {
         steps.clear();
         started = false;
         scanned = 0;
@@ -187,13 +187,13 @@ final class MessageScanner {
 
     private void transaction(int code) {
         switch (code) {
-            case RsProtocol.REQUEST:
+            case WireCodes.REQUEST:
                 read(I32, this::request);
                 break;
-            case RsProtocol.BODY_SPECIFICATION:
+            case WireCodes.BODY_SPECIFICATION:
                 body();
                 break;
-            case RsProtocol.INTERLOCK:
+            case WireCodes.INTERLOCK:
                 skip(I32);
                 break;
             default:
@@ -288,9 +288,9 @@ final class MessageScanner {
 
     private void part() {
         read(I32, id -> {
-            if (id != BodyCodec.EMPTY_SLOT) {
+            if (id != WireCodes.EMPTY_SLOT) {
                 read(I32, type -> {
-                    if (type != RsProtocol.UNDEFINED_BODY_PART) {
+                    if (type != WireCodes.UNDEFINED_BODY_PART) {
                         partOfType(type);
                     }
                 });
@@ -300,31 +300,31 @@ final class MessageScanner {
 
     private void partOfType(int type) {
         switch (type) {
-            case RsProtocol.WHEEL_SYSTEM:
-                read(I32, system -> skip(system == BodyCodec.DIFFERENTIAL ? 2 * F64 : 4 * F64 + BOOL));
+            case WireCodes.WHEEL_SYSTEM:
+                read(I32, system -> skip(system == WireCodes.DIFFERENTIAL ? 2 * F64 : 4 * F64 + BOOL));
                 count(WireLimits.MAX_WHEELS, n -> times(n, () -> {
                     skip(I32);
                     outline();
                     skip(4 * F64 + I32);
                 }));
                 break;
-            case RsProtocol.BODY_CIRCLE:
+            case WireCodes.BODY_CIRCLE:
                 skip(3 * F64);
                 break;
-            case RsProtocol.BODY_SHAPE:
-            case RsProtocol.BODY_CONTACT_SENSOR:
-            case RsProtocol.BODY_PAINTER:
+            case WireCodes.BODY_SHAPE:
+            case WireCodes.BODY_CONTACT_SENSOR:
+            case WireCodes.BODY_PAINTER:
                 outline();
                 break;
-            case RsProtocol.BODY_TARGET_SENSOR:
+            case WireCodes.BODY_TARGET_SENSOR:
                 outline();
                 skip(5 * F64 + 2 * I32);
                 break;
-            case RsProtocol.BODY_RANGE_SENSOR:
+            case WireCodes.BODY_RANGE_SENSOR:
                 outline();
                 skip(4 * F64 + I32);
                 break;
-            case RsProtocol.BODY_PAINT_SENSOR:
+            case WireCodes.BODY_PAINT_SENSOR:
                 outline();
                 skip(2 * F64);
                 count(WireLimits.MAX_REGIONS, n -> skip((long) n * I32));

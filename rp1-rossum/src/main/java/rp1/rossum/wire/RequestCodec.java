@@ -1,8 +1,11 @@
-package rp1.rossum;
+package rp1.rossum.wire;
 
 import java.awt.Color;
 import java.io.IOException;
+import java.util.function.Supplier;
 
+import rp1.rossum.RsBody;
+import rp1.rossum.RsProtocolException;
 import rp1.rossum.request.RsActuatorControlRequest;
 import rp1.rossum.request.RsEncoderStatusRequest;
 import rp1.rossum.request.RsHaltRequest;
@@ -19,10 +22,10 @@ import rp1.rossum.request.RsTargetSelectionRequest;
 /**
  * Encodes and decodes the body of a REQUEST transaction (protocol.md section 6): request code,
  * request index (always written as 0), then the request's payload. Encoders return a complete
- * payload in memory; the decoder hands each request to a {@link RequestSink}, and
- * {@link #copying(RequestSink)} hands on what the decoder would give without encoding anything.
+ * payload in memory; the decoder hands each request to a {@link RequestListener}, and
+ * {@link #copying(RequestListener)} hands on what the decoder would give without encoding anything.
  */
-final class RequestCodec {
+public final class RequestCodec {
     private RequestCodec() {
     }
 
@@ -30,27 +33,33 @@ final class RequestCodec {
         return new WireOut().i32(requestCode).i32(0);
     }
 
-    static WireOut timeout(double duration, int timeoutIndex) {
+    /** The payload of a timeout request (what follows the REQUEST header). */
+    public static WireOut timeout(double duration, int timeoutIndex) {
         return prefix(RsRequest.REQ_TIMEOUT).f64(duration).i32(timeoutIndex);
     }
 
-    static WireOut subscription(int eventCode, int eventIndex, boolean enable) {
+    /** The payload of a subscription request (what follows the REQUEST header). */
+    public static WireOut subscription(int eventCode, int eventIndex, boolean enable) {
         return prefix(RsRequest.REQ_SUBSCRIPTION).i32(eventCode).i32(eventIndex).bool(enable);
     }
 
-    static WireOut sensorStatus(int sensorID) {
+    /** The payload of a sensor-status request (what follows the REQUEST header). */
+    public static WireOut sensorStatus(int sensorID) {
         return prefix(RsRequest.REQ_SENSOR_STATUS).i32(sensorID);
     }
 
-    static WireOut motion(RsMotionRequest r) {
+    /** The payload of a motion request (what follows the REQUEST header). */
+    public static WireOut motion(RsMotionRequest r) {
         return prefix(RsRequest.REQ_MOTION).f64(r.linearVelocity).f64(r.rotationalVelocity).f64(r.duration);
     }
 
-    static WireOut halt() {
+    /** The payload of a halt request (what follows the REQUEST header). */
+    public static WireOut halt() {
         return prefix(RsRequest.REQ_HALT);
     }
 
-    static WireOut position() {
+    /** The payload of a position request (what follows the REQUEST header). */
+    public static WireOut position() {
         return prefix(RsRequest.REQ_POSITION);
     }
 
@@ -58,7 +67,7 @@ final class RequestCodec {
      * A placement carries the name twice over: an i32 with the name's length in UTF-16 units (only
      * zero or non-zero matters) and, if that is non-zero, the name as a STR.
      */
-    static WireOut placement(String name) {
+    public static WireOut placement(String name) {
         WireOut out = prefix(RsRequest.REQ_PLACEMENT);
         int flag = name == null ? 0 : name.length();
         out.i32(flag);
@@ -68,32 +77,39 @@ final class RequestCodec {
         return out;
     }
 
-    static WireOut targetSelection(boolean random, String name, boolean status, boolean exclusive) {
+    /** The payload of a target-selection request (what follows the REQUEST header). */
+    public static WireOut targetSelection(boolean random, String name, boolean status, boolean exclusive) {
         return prefix(RsRequest.REQ_TARGET_SELECTION).bool(random).str(name).bool(status).bool(exclusive);
     }
 
-    static WireOut plan() {
+    /** The payload of a plan request (what follows the REQUEST header). */
+    public static WireOut plan() {
         return prefix(RsRequest.REQ_PLAN);
     }
 
-    static WireOut heartbeat(double interval) {
+    /** The payload of a heartbeat request (what follows the REQUEST header). */
+    public static WireOut heartbeat(double interval) {
         return prefix(RsRequest.REQ_HEARTBEAT).f64(interval);
     }
 
-    static WireOut painterErasure(int painterID) {
+    /** The payload of a painter change that erases the painter's trail (what follows the REQUEST header). */
+    public static WireOut painterErasure(int painterID) {
         return prefix(RsRequest.REQ_PAINTER_CHANGE).i32(painterID).bool(true);
     }
 
-    static WireOut painterDeactivation(int painterID) {
+    /** The payload of a painter change that deactivates the painter (what follows the REQUEST header). */
+    public static WireOut painterDeactivation(int painterID) {
         return prefix(RsRequest.REQ_PAINTER_CHANGE).i32(painterID).bool(false).bool(false);
     }
 
-    static WireOut painterActivation(int painterID, double x, double y, double width, Color[] colors) {
+    /** The payload of a painter change that activates the painter with a trailer of this size and these colours (what follows the REQUEST header). */
+    public static WireOut painterActivation(int painterID, double x, double y, double width, Color[] colors) {
         return prefix(RsRequest.REQ_PAINTER_CHANGE).i32(painterID).bool(false).bool(true).bool(true)
                 .f64(x).f64(y).f64(width).colorArray(colors);
     }
 
-    static WireOut actuatorControl(RsActuatorControlRequest r) {
+    /** The payload of an actuator command (what follows the REQUEST header). */
+    public static WireOut actuatorControl(RsActuatorControlRequest r) {
         WireOut out = prefix(RsRequest.REQ_ACTUATOR_CONTROL).i32(r.actuatorID).i32(r.commandID);
         String[] names = r.getParameterNames();
         double[] values = r.getParameterValues();
@@ -104,7 +120,8 @@ final class RequestCodec {
         return out;
     }
 
-    static WireOut encoderStatus(int requestIndex, int[] encoderIDs, boolean clearOnReport) {
+    /** The payload of an encoder-status request (what follows the REQUEST header). */
+    public static WireOut encoderStatus(int requestIndex, int[] encoderIDs, boolean clearOnReport) {
         WireOut out = prefix(RsRequest.REQ_ENCODER_STATUS).i32(requestIndex).i32(encoderIDs.length);
         for (int id : encoderIDs) {
             out.i32(id);
@@ -118,7 +135,7 @@ final class RequestCodec {
      * requests a server received by their encodings. Position requests have no class and are encoded
      * with {@link #position()}.
      */
-    static WireOut encode(RsRequest r) {
+    public static WireOut encode(RsRequest r) {
         switch (r.requestID) {
             case RsRequest.REQ_SUBSCRIPTION: {
                 RsSubscriptionRequest s = (RsSubscriptionRequest) r;
@@ -154,7 +171,7 @@ final class RequestCodec {
     }
 
     /** An erasure, a deactivation or an activation, as the request says (an activation's trailer always as defined). */
-    static WireOut painterChange(RsPainterChangeRequest p) {
+    public static WireOut painterChange(RsPainterChangeRequest p) {
         if (p.erasure) {
             return painterErasure(p.painterID);
         }
@@ -167,13 +184,19 @@ final class RequestCodec {
     /**
      * A sink that hands each request on to {@code target} as the object {@link #decode} would give for
      * its encoding, built without encoding it (the requests of a directly connected client, see
-     * {@link DirectLink}): a new object of the decoded class, whatever the caller's object was, so
+     * {@code RsConnection.connectDirect}): a new object of the decoded class, whatever the caller's object was, so
      * nothing the caller does with its object later reaches the server. The wire's normalisations are
      * applied: a placement name "" becomes null, a null target name or actuator parameter name "",
      * an empty colour list null, colours lose their alpha, and an activated painter's trailer counts
-     * as defined. The caller's arrays are copied.
+     * as defined. The caller's arrays are copied. A body is handed on as given: the caller passes a
+     * decoded copy, which only the body codec can make.
      */
-    static RequestSink copying(RequestSink target) {
+    public static RequestListener copying(RequestListener target) {
+        return new Copying(() -> target);
+    }
+
+    /** As {@link #copying(RequestListener)}, to whatever listener {@code target} gives at each request. */
+    public static RequestListener copying(Supplier<RequestListener> target) {
         return new Copying(target);
     }
 
@@ -181,7 +204,7 @@ final class RequestCodec {
      * Reads everything after the header of a REQUEST transaction and hands it to {@code sink}. Every
      * floating-point field must be a finite number (protocol.md section 14).
      */
-    static void decode(WireIn in, RequestSink sink) throws IOException {
+    public static void decode(WireIn in, RequestListener sink) throws IOException {
         int code = in.i32("request code");
         if (code < 0 || code > RsRequest.REQ_MAX_CODE) {
             throw new RsProtocolException("request code", "unknown code " + code);
@@ -278,67 +301,72 @@ final class RequestCodec {
         return new RsEncoderStatusRequest(index, ids, in.bool("encoder clear on report"));
     }
 
-    /** See {@link #copying(RequestSink)}; each method mirrors the encoder and decoder of its request. */
-    private static final class Copying implements RequestSink {
-        private final RequestSink target;
+    /** See {@link #copying(RequestListener)}; each method mirrors the encoder and decoder of its request. */
+    private static final class Copying implements RequestListener {
+        private final Supplier<RequestListener> target;
 
-        Copying(RequestSink target) {
+        Copying(Supplier<RequestListener> target) {
             this.target = target;
         }
 
         @Override
+        public void body(RsBody body) {
+            target.get().body(body);
+        }
+
+        @Override
         public void timeout(double duration, int timeoutIndex) {
-            target.timeout(duration, timeoutIndex);
+            target.get().timeout(duration, timeoutIndex);
         }
 
         @Override
         public void subscription(RsSubscriptionRequest r) {
-            target.subscription(new RsSubscriptionRequest(r.eventCode, r.eventIndex, r.eventEnable));
+            target.get().subscription(new RsSubscriptionRequest(r.eventCode, r.eventIndex, r.eventEnable));
         }
 
         @Override
         public void sensorStatus(RsSensorRequest r) {
-            target.sensorStatus(new RsSensorRequest(r.sensorID));
+            target.get().sensorStatus(new RsSensorRequest(r.sensorID));
         }
 
         @Override
         public void motion(RsMotionRequest r) {
-            target.motion(new RsMotionRequest(r.linearVelocity, r.rotationalVelocity, r.duration));
+            target.get().motion(new RsMotionRequest(r.linearVelocity, r.rotationalVelocity, r.duration));
         }
 
         @Override
         public void halt(RsHaltRequest r) {
-            target.halt(new RsHaltRequest());
+            target.get().halt(new RsHaltRequest());
         }
 
         @Override
         public void position() {
-            target.position();
+            target.get().position();
         }
 
         @Override
         public void setPosition() {
-            target.setPosition();
+            target.get().setPosition();
         }
 
         @Override
         public void placement(RsPlacementRequest r) {
-            target.placement(new RsPlacementRequest(r.name == null || r.name.isEmpty() ? null : r.name));
+            target.get().placement(new RsPlacementRequest(r.name == null || r.name.isEmpty() ? null : r.name));
         }
 
         @Override
         public void targetSelection(RsTargetSelectionRequest r) {
-            target.targetSelection(new RsTargetSelectionRequest(r.random, text(r.name), r.status, r.exclusive));
+            target.get().targetSelection(new RsTargetSelectionRequest(r.random, text(r.name), r.status, r.exclusive));
         }
 
         @Override
         public void plan(RsPlanRequest r) {
-            target.plan(new RsPlanRequest());
+            target.get().plan(new RsPlanRequest());
         }
 
         @Override
         public void heartbeat(RsHeartbeatRequest r) {
-            target.heartbeat(new RsHeartbeatRequest(r.interval));
+            target.get().heartbeat(new RsHeartbeatRequest(r.interval));
         }
 
         @Override
@@ -352,7 +380,7 @@ final class RequestCodec {
                 copy = new RsPainterChangeRequest(r.painterID, false, true, true, r.xTrailer, r.yTrailer, r.wTrailer,
                         colors(r.color));
             }
-            target.painterChange(copy);
+            target.get().painterChange(copy);
         }
 
         @Override
@@ -363,12 +391,12 @@ final class RequestCodec {
             for (int i = 0; i < names.length; i++) {
                 copy.addParameter(text(names[i]), values[i]);
             }
-            target.actuatorControl(copy);
+            target.get().actuatorControl(copy);
         }
 
         @Override
         public void encoderStatus(RsEncoderStatusRequest r) {
-            target.encoderStatus(new RsEncoderStatusRequest(r.requestIndex, r.encoderID.clone(), r.clearOnReport));
+            target.get().encoderStatus(new RsEncoderStatusRequest(r.requestIndex, r.encoderID.clone(), r.clearOnReport));
         }
 
         /** A STR: null goes as "". */

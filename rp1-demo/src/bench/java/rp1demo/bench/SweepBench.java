@@ -1,0 +1,73 @@
+package rp1demo.bench;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.time.LocalDate;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+
+import rp1.simulator.launch.JavaCommand;
+
+/**
+ * {@code gradle bench} (this module's part, docs/performance.md): the wall time of 64 bumper runs of
+ * 60 simulated seconds swept with {@code --jobs 2} in one process ({@code --isolation loader}), side
+ * by side with one bumper run started as a process of its own ({@code java rp1.Server -p bumper.ini}),
+ * and 8 runs with {@code --isolation process} for comparison. Each figure is the median of three
+ * tries, every one a fresh process, as a user would start it. Prints figures and never fails on them.
+ */
+public final class SweepBench {
+    private static final int TRIES = 3;
+    /** The options ./rp1 sweep starts its JVM with. */
+    private static final List<String> QUICK = List.of("-XX:TieredStopAtLevel=1");
+
+    private SweepBench() {
+    }
+
+    /** Runs the comparison; the working directory is the repository root. */
+    public static void main(String[] args) throws Exception {
+        Path properties = Paths.get("Properties/bumper.ini").toAbsolutePath();
+        System.out.printf(Locale.ROOT, "RP1 sweep benchmark, %s, %d processors, Java %s, load average %.1f%n",
+                LocalDate.now(), Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
+                java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+        String p = properties.toString();
+        double one = median(List.of(), "rp1.Server", "-p", p);
+        double loader = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
+        double fullJit = median(List.of(), "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
+        double process = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-8", "--jobs", "2", "--isolation", "process",
+                "--out", "OUT");
+        System.out.printf(Locale.ROOT, "one bumper run of 60 simulated s as a process of its own (java rp1.Server):"
+                + " %.2f s%n", one);
+        System.out.printf(Locale.ROOT, "64 such runs, ./rp1 sweep --jobs 2 (--isolation loader, %s): %.2f s, %.1f times"
+                + " the one run (target: at most 2)%n", String.join(" ", QUICK), loader, loader / one);
+        System.out.printf(Locale.ROOT, "the same with both compilers (java rp1.Sweep without options): %.2f s, %.1f times%n",
+                fullJit, fullJit / one);
+        System.out.printf(Locale.ROOT, "8 such runs, --isolation process: %.2f s (%.2f s a run)%n", process, process / 8);
+    }
+
+    /** The median wall seconds of {@link #TRIES} runs of {@code java JVM MAIN ARGS}, each in a fresh folder (OUT in it). */
+    private static double median(List<String> jvm, String main, String... args) throws IOException, InterruptedException {
+        double[] times = new double[TRIES];
+        for (int i = 0; i < TRIES; i++) {
+            Path dir = Files.createTempDirectory("rp1-sweep-bench");
+            List<String> words = new ArrayList<>();
+            for (String a : args) {
+                words.add(a.equals("OUT") ? dir.resolve("out").toString() : a);
+            }
+            long start = System.nanoTime();
+            Process p = new ProcessBuilder(JavaCommand.of(jvm, main, words.toArray(new String[0])))
+                    .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve("output.txt").toFile())
+                    .start();
+            int status = p.waitFor();
+            times[i] = (System.nanoTime() - start) * 1e-9;
+            if (status != 0) {
+                throw new IllegalStateException(main + " ended with status " + status + "; see " + dir.resolve("output.txt"));
+            }
+        }
+        Arrays.sort(times);
+        return times[TRIES / 2];
+    }
+}

@@ -1,0 +1,144 @@
+package rp1;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import rp1.rossum.RsPlan;
+import rp1.simulator.batch.Batch;
+import rp1.simulator.batch.ResultsCsv;
+import rp1.simulator.batch.RobotResult;
+import rp1.simulator.batch.SummaryCsv;
+import rp1.simulator.batch.Trail;
+import rp1.view.BoxPlot;
+import rp1.view.SweepPicture;
+
+/**
+ * A sweep's {@code summary.png} from its results: a colour and a number per configuration of
+ * {@code summary.csv} (varied values, plan, robot), a box plot of each metric worth comparing, and
+ * the trails of each configuration's runs over its plan; {@link SweepPicture} draws it.
+ */
+final class SweepSummary {
+    /** The metrics drawn as box plots, with their units, before the robots' own results. */
+    private static final Map<String, String> METRICS = metrics();
+
+    private SweepSummary() {
+    }
+
+    private static Map<String, String> metrics() {
+        Map<String, String> m = new LinkedHashMap<>();
+        m.put("distance", "distance (m)");
+        m.put("collisions", "collisions");
+        m.put("first_collision_time", "first collision (s)");
+        m.put("events", "events");
+        return m;
+    }
+
+    /**
+     * Writes the picture.
+     *
+     * @param rows     the summary's rows, one per configuration
+     * @param outcomes the runs, for their trails
+     */
+    static void write(Path file, List<SummaryCsv.Row> rows, List<String> varied, Map<String, RsPlan> plans,
+                             List<Batch.Outcome> outcomes) throws IOException {
+        List<SummaryCsv.Row> drawn = new ArrayList<>();
+        for (SummaryCsv.Row r : rows) {
+            if (!r.configuration().get("robot").isEmpty()) {
+                drawn.add(r);
+            }
+        }
+        List<SweepPicture.Key> keys = new ArrayList<>();
+        List<SweepPicture.Panel> panels = new ArrayList<>();
+        for (int i = 0; i < drawn.size(); i++) {
+            Map<String, String> c = drawn.get(i).configuration();
+            String label = (i + 1) + ": " + String.join(", ", describe(c, varied));
+            keys.add(new SweepPicture.Key(SweepPicture.colour(i), label));
+            panels.add(new SweepPicture.Panel(label, SweepPicture.colour(i), plans.get(c.get("plan")),
+                    trails(outcomes, c, varied)));
+        }
+        List<BoxPlot.Metric> metrics = new ArrayList<>();
+        List<String> names = new ArrayList<>(METRICS.keySet());
+        outcomes.stream().flatMap(o -> o.report().robots().stream()).flatMap(r -> r.results().keySet().stream())
+                .distinct().forEach(n -> names.add(ResultsCsv.RESULT_PREFIX + n));
+        for (String name : names) {
+            List<BoxPlot.Box> boxes = new ArrayList<>();
+            for (int i = 0; i < drawn.size(); i++) {
+                boxes.add(new BoxPlot.Box(Integer.toString(i + 1), SweepPicture.colour(i),
+                        values(outcomes, drawn.get(i).configuration(), varied, name)));
+            }
+            metrics.add(new BoxPlot.Metric(METRICS.getOrDefault(name, name), boxes));
+        }
+        SweepPicture.write(file, metrics, panels, keys);
+    }
+
+    private static List<String> describe(Map<String, String> c, List<String> varied) {
+        List<String> words = new ArrayList<>();
+        varied.forEach(k -> words.add(k + "=" + c.get(k)));
+        words.add(Path.of(c.get("plan")).getFileName().toString());
+        words.add(c.get("robot"));
+        return words;
+    }
+
+    /** Whether the robot's row of the outcome belongs to configuration {@code c}. */
+    private static boolean in(Batch.Outcome o, String robot, Map<String, String> c, List<String> varied) {
+        for (String k : varied) {
+            if (!c.get(k).equals(o.run().configuration().get(k))) {
+                return false;
+            }
+        }
+        return c.get("plan").equals(o.run().plan()) && c.get("robot").equals(robot);
+    }
+
+    private static List<SweepPicture.RunTrails> trails(List<Batch.Outcome> outcomes, Map<String, String> c,
+                                                       List<String> varied) {
+        List<SweepPicture.RunTrails> runs = new ArrayList<>();
+        for (Batch.Outcome o : outcomes) {
+            for (RobotResult r : o.report().robots()) {
+                if (in(o, r.name(), c, varied)) {
+                    List<double[]> pieces = new ArrayList<>();
+                    for (Trail t : o.trails()) {
+                        if (t.robot().equals(r.name())) {
+                            pieces.addAll(t.pieces());
+                        }
+                    }
+                    runs.add(new SweepPicture.RunTrails(pieces, points(r.start()), points(r.end())));
+                }
+            }
+        }
+        return runs;
+    }
+
+    private static List<double[]> points(RobotResult.Pose p) {
+        return Double.isNaN(p.x()) ? List.of() : List.of(new double[] {p.x(), p.y()});
+    }
+
+    private static double[] values(List<Batch.Outcome> outcomes, Map<String, String> c, List<String> varied,
+                                   String metric) {
+        List<Double> values = new ArrayList<>();
+        for (Batch.Outcome o : outcomes) {
+            for (RobotResult r : o.report().robots()) {
+                if (in(o, r.name(), c, varied)) {
+                    double v = value(r, metric);
+                    if (!Double.isNaN(v)) {
+                        values.add(v);
+                    }
+                }
+            }
+        }
+        return values.stream().mapToDouble(Double::doubleValue).toArray();
+    }
+
+    private static double value(RobotResult r, String metric) {
+        return switch (metric) {
+            case "distance" -> r.distance();
+            case "collisions" -> r.collisions();
+            case "first_collision_time" -> r.firstCollisionTime();
+            case "events" -> r.events();
+            default -> r.results().getOrDefault(metric.substring(ResultsCsv.RESULT_PREFIX.length()), Double.NaN);
+        };
+    }
+}

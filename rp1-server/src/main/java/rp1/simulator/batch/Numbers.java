@@ -1,0 +1,44 @@
+package rp1.simulator.batch;
+
+import java.math.BigDecimal;
+import java.math.RoundingMode;
+
+/**
+ * Numbers as a sweep's tables write them: rounded to what the model resolves (docs/guide.md lists
+ * the places per unit), without trailing zeros, empty for "none" (NaN).
+ */
+final class Numbers {
+    /** Places of metres, radians and simulated seconds: 0.1 mm, 0.1 mrad, 0.1 ms. */
+    static final int MODEL = 4;
+    /** Places of wall-clock seconds. */
+    static final int WALL = 3;
+    /** Places of a robot's own results and of statistics. */
+    static final int FREE = 6;
+
+    private Numbers() {
+    }
+
+    /** {@code v} rounded to {@code places} decimals, trailing zeros dropped; empty if NaN. */
+    static String format(double v, int places) {
+        if (Double.isNaN(v)) {
+            return "";
+        }
+        if (Double.isInfinite(v)) {
+            return v > 0 ? "inf" : "-inf";
+        }
+        BigDecimal d = BigDecimal.valueOf(v).setScale(places, RoundingMode.HALF_EVEN).stripTrailingZeros();
+        return d.signum() == 0 ? "0" : d.toPlainString();
+    }
+
+    /** A field of a table as a number: NaN if empty or not a number. */
+    static double parse(String s) {
+        if (s == null || s.isEmpty()) {
+            return Double.NaN;
+        }
+        try {
+            return Double.parseDouble(s);
+        } catch (NumberFormatException e) {
+            return Double.NaN;
+        }
+    }
+}

@@ -1,0 +1,146 @@
+package rp1.simulator.batch;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
+
+import rp1.simulator.launch.JavaCommand;
+
+/**
+ * Runs each in a Java process of its own ({@code --isolation process}): {@link SweepRun} started as
+ * {@code java rp1.simulator.batch.SweepRun DIR}, stopped if it takes longer than the timeout. For
+ * robots that cannot share a process: static state shared between instances, {@code System.exit},
+ * threads of their own that outlive a run.
+ */
+final class ProcessRuns implements RunEngine {
+    /** What the run's process printed. */
+    static final String OUTPUT = "output.txt";
+    /** How long a run that is asked to stop may take to close its files before it is killed. */
+    static final long STOP_GRACE_SECONDS = 10;
+
+    /**
+     * A run computes for milliseconds: the optimizing compiler's work would never pay back, and
+     * costs more than the run (docs/performance.md).
+     */
+    static final List<String> QUICK_COMPILER = List.of("-XX:TieredStopAtLevel=1");
+
+    private final double timeoutSeconds;
+    /** The robot's classes ({@code -cp}), absolute, handed to each run's process. */
+    private final List<Path> classPath;
+    private final Set<Process> running = ConcurrentHashMap.newKeySet();
+    private volatile boolean stopping;
+
+    ProcessRuns(double timeoutSeconds, List<Path> classPath) {
+        this.timeoutSeconds = timeoutSeconds;
+        this.classPath = List.copyOf(classPath);
+    }
+
+    /** The run's folder, and the robot's class path (-cp), for {@link SweepRun}'s command line. */
+    private String[] arguments(Batch.Run run) {
+        List<String> args = new ArrayList<>(List.of(run.dir().toAbsolutePath().toString()));
+        if (!classPath.isEmpty()) {
+            args.add("-cp");
+            args.add(classPath.stream().map(Path::toString).collect(Collectors.joining(File.pathSeparator)));
+        }
+        return args.toArray(new String[0]);
+    }
+
+    @Override
+    public Ran run(Batch.Run run) throws IOException, InterruptedException {
+        Process p = new ProcessBuilder(JavaCommand.of(QUICK_COMPILER, SweepRun.class.getName(), arguments(run)))
+                .redirectErrorStream(true)
+                .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
+        running.add(p);
+        if (stopping) {
+            p.destroy();
+        }
+        boolean ended;
+        try {
+            ended = p.waitFor((long) (timeoutSeconds * 1000), TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            stop(p);
+            throw e;
+        } finally {
+            running.remove(p);
+        }
+        if (!ended) {
+            stop(p);
+            return new Ran(RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
+                    timeoutSeconds), RunReport.TIMED_OUT), Batch.trails(run));
+        }
+        return new Ran(report(run.dir(), p.exitValue()), Batch.trails(run));
+    }
+
+    /**
+     * Stops the runs going as Ctrl-C would (SIGTERM), so they close their recordings; a run still
+     * going after a grace period is killed.
+     */
+    @Override
+    public void stopAll() {
+        stopping = true;
+        running.forEach(Process::destroy);
+        Thread killer = new Thread(() -> {
+            try {
+                Thread.sleep(TimeUnit.SECONDS.toMillis(STOP_GRACE_SECONDS));
+            } catch (InterruptedException e) {
+                return;
+            }
+            running.forEach(Process::destroyForcibly);
+        }, "rp1-sweep-stop");
+        killer.setDaemon(true);
+        killer.start();
+    }
+
+    /**
+     * Stops a run as Ctrl-C would, so that it closes its recording and event log (the rows worth
+     * replaying are often these); forcibly if it has not stopped within a grace period.
+     */
+    private static void stop(Process p) throws InterruptedException {
+        stop(p, STOP_GRACE_SECONDS);
+    }
+
+    /** Stops {@code p} as Ctrl-C would (SIGTERM), forcibly if it is still going {@code graceSeconds} later. */
+    static void stop(Process p, long graceSeconds) throws InterruptedException {
+        if (!p.isAlive()) {
+            return;
+        }
+        p.destroy();
+        if (!p.waitFor(graceSeconds, TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            p.waitFor();
+        }
+    }
+
+    private static RunReport report(Path dir, int status) {
+        try {
+            return RunReport.read(dir);
+        } catch (IOException e) {
+            return RunReport.failed("the run ended with status " + status + " and no results: "
+                    + lastLine(dir.resolve(OUTPUT)), status);
+        }
+    }
+
+    /** The last line a process printed into {@code file}, or what there is instead. */
+    static String lastLine(Path file) {
+        try {
+            List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+            for (int i = lines.size() - 1; i >= 0; i--) {
+                if (!lines.get(i).isBlank()) {
+                    return lines.get(i).trim();
+                }
+            }
+            return "it printed nothing";
+        } catch (IOException e) {
+            return "no output (" + e.getMessage() + ")";
+        }
+    }
+}

@@ -1,0 +1,121 @@
+package rp1.simulator.batch;
+
+import java.io.File;
+import java.net.MalformedURLException;
+import java.net.URISyntaxException;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.security.CodeSource;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
+import rp1.rossum.RsClient;
+
+/**
+ * The class loader of one run's robot ({@code --isolation loader}): the robot's classes, and every
+ * class of the class path that is not the simulator's or the client library's, are loaded afresh
+ * for each run, so a static field of the robot starts anew in every run, as it would in a process
+ * of its own. The library ({@code rp1.rossum}) and the simulator come from the sweep's loader: the
+ * server and the robot must agree on {@code RsClient}. A class the run's loader cannot find on the
+ * class path is the sweep loader's.
+ */
+final class RunClassLoader extends URLClassLoader {
+    static {
+        registerAsParallelCapable();
+    }
+
+    private final Set<URL> shared;
+
+    private RunClassLoader(URL[] urls, Set<URL> shared, ClassLoader parent) {
+        super("rp1-run", urls, parent);
+        this.shared = shared;
+    }
+
+    /**
+     * A loader for one run: the class path of this process, and the folders or jars that hold
+     * {@code classNames} (the robots, found through {@code parent}), less the simulator's own.
+     */
+    static RunClassLoader of(List<String> classNames, ClassLoader parent) {
+        Set<URL> shared = new LinkedHashSet<>();
+        shared.add(location(RsClient.class));
+        shared.add(location(RunClassLoader.class));
+        Set<URL> urls = new LinkedHashSet<>();
+        for (String name : classNames) {
+            try {
+                URL at = location(Class.forName(name, false, parent));
+                if (at != null) {
+                    urls.add(at);
+                }
+            } catch (ClassNotFoundException | LinkageError e) {
+                // The run's server says so, naming dlcName.
+            }
+        }
+        for (String entry : System.getProperty("java.class.path", "").split(File.pathSeparator)) {
+            if (!entry.isEmpty()) {
+                try {
+                    urls.add(Paths.get(entry).toAbsolutePath().toUri().toURL());
+                } catch (MalformedURLException | RuntimeException e) {
+                    // Not a path: nothing to load from.
+                }
+            }
+        }
+        urls.removeAll(shared);
+        shared.remove(null);
+        return new RunClassLoader(urls.toArray(new URL[0]), shared, parent);
+    }
+
+    /** Where a class was loaded from (its folder or jar), or null if that is unknown. */
+    private static URL location(Class<?> type) {
+        CodeSource source = type.getProtectionDomain().getCodeSource();
+        if (source == null || source.getLocation() == null) {
+            return null;
+        }
+        try {
+            return Path.of(source.getLocation().toURI()).toAbsolutePath().toUri().toURL();
+        } catch (URISyntaxException | MalformedURLException | RuntimeException e) {
+            return source.getLocation();
+        }
+    }
+
+    /**
+     * This run's copy of any class on its own class path; the Java platform's, the library's and the
+     * simulator's, and anything it cannot find, from the sweep's loader.
+     */
+    @Override
+    protected Class<?> loadClass(String name, boolean resolve) throws ClassNotFoundException {
+        synchronized (getClassLoadingLock(name)) {
+            Class<?> c = findLoadedClass(name);
+            if (c == null && !isShared(name)) {
+                try {
+                    c = findClass(name);
+                } catch (ClassNotFoundException e) {
+                    c = null;
+                }
+            }
+            if (c == null) {
+                c = getParent().loadClass(name);
+            }
+            if (resolve) {
+                resolveClass(c);
+            }
+            return c;
+        }
+    }
+
+    /** The platform's classes, and classes of the library and the simulator wherever they are found. */
+    private boolean isShared(String name) {
+        if (name.startsWith("java.") || name.startsWith("javax.") || name.startsWith("jdk.") || name.startsWith("sun.")) {
+            return true;
+        }
+        try {
+            Class<?> parentCopy = Class.forName(name, false, getParent());
+            URL at = location(parentCopy);
+            return at == null || shared.contains(at);
+        } catch (ClassNotFoundException | LinkageError e) {
+            return false;
+        }
+    }
+}

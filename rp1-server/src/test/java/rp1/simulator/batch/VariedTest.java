@@ -1,0 +1,42 @@
+package rp1.simulator.batch;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.Test;
+
+/** {@code --vary}: lists, decimal ranges, the keys a sweep sets itself, and the product of several. */
+class VariedTest {
+    @Test
+    void aListKeepsItsOrderAndARangeIsCountedInDecimals() {
+        assertEquals(List.of("0.5", "0.3"), Varied.parse("param.speed=0.5,0.3,0.5").values());
+        assertEquals(List.of("0.1", "0.2", "0.3"), Varied.parse("param.speed=0.1:0.3:0.1").values());
+        assertEquals(List.of("10", "25", "40"), Varied.parse("maxSimulationTime=10:45:15").values());
+    }
+
+    @Test
+    void keysTheSweepSetsItselfAndBadRangesAreRefusedSayingWhy() {
+        assertEquals("--vary randomSeed: the sweep sets randomSeed for each run itself; use --seeds",
+                assertThrows(IllegalArgumentException.class, () -> Varied.parse("randomSeed=1,2")).getMessage());
+        assertEquals("--vary x=3:1:1: a range needs FROM <= TO and a positive STEP",
+                assertThrows(IllegalArgumentException.class, () -> Varied.parse("x=3:1:1")).getMessage());
+        assertEquals("--vary x=1:a:1: \"a\" is not a number",
+                assertThrows(IllegalArgumentException.class, () -> Varied.parse("x=1:a:1")).getMessage());
+        assertThrows(IllegalArgumentException.class, () -> Varied.parse("x=1,,2"));
+        assertThrows(IllegalArgumentException.class, () -> SweepOptions.parse(new String[] {"-p", "a.ini", "--seeds", "1",
+            "--out", "o", "--vary", "x=1", "--vary", "x=2"}));
+    }
+
+    @Test
+    void severalKeysMakeTheirFullProductTheFirstVaryingSlowest() {
+        List<Map<String, String>> product = Varied.product(List.of(Varied.parse("a=1,2"), Varied.parse("b=x,y,z")));
+        assertEquals(6, product.size());
+        assertEquals(Map.of("a", "1", "b", "x"), product.get(0));
+        assertEquals(Map.of("a", "1", "b", "z"), product.get(2));
+        assertEquals(Map.of("a", "2", "b", "x"), product.get(3));
+        assertEquals(List.of(Map.of()), Varied.product(List.of()));
+    }
+}
