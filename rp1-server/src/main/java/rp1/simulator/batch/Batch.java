@@ -21,6 +21,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.regex.Pattern;
 
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
@@ -431,7 +432,9 @@ public final class Batch {
         if (options.client != null) {
             CLIENT_KEYS.forEach((k, v) -> own.append(k).append('=').append(v).append('\n'));
         }
-        return propertiesText + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + describe(run.configuration())
+        // An empty value is refused as a typo, so "no picture" is the user's snapshotFileName left out.
+        String user = options.pictures ? propertiesText : withoutKey(propertiesText, "snapshotFileName");
+        return user + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + describe(run.configuration())
                 + "\n" + own
                 + "randomSeed=" + run.seed() + "\n"
                 + "floorPlanFileName=" + run.plan() + "\n"
@@ -441,7 +444,23 @@ public final class Batch {
                 + "logToSystemOut=false\n"
                 + "recordFileName=" + d.resolve(RECORDING) + "\n"
                 + "eventLogFileName=" + d.resolve(EVENTS) + "\n"
-                + "snapshotFileName=" + (options.pictures ? d.resolve(PICTURE).toString() : "") + "\n"
+                + (options.pictures ? "snapshotFileName=" + d.resolve(PICTURE) + "\n" : "")
                 + "snapshotInterval=0\n";
+    }
+
+    /** The properties text without the lines that set {@code key} (and the lines such a line continues onto). */
+    static String withoutKey(String text, String key) {
+        StringBuilder kept = new StringBuilder();
+        boolean dropping = false;
+        for (String line : text.split("\n", -1)) {
+            String t = line.stripLeading();
+            boolean continues = line.endsWith("\\");
+            if (dropping || t.matches(Pattern.quote(key) + "\\s*[=:\\s].*|" + Pattern.quote(key))) {
+                dropping = continues;
+                continue;
+            }
+            kept.append(line).append('\n');
+        }
+        return kept.toString();
     }
 }
