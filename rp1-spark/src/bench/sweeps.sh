@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The figures of docs/performance.md, "Sweeps on Spark": the same bumper sweep on the sweep's own
 # engine, on Spark's local[2] and on a two-worker cluster of this machine (rp1 cluster), with N and
-# 2N runs, short (60 simulated seconds) and long (an hour). From two sizes: the cost of one more run
+# 2N runs, short (60 simulated seconds) and long (ten simulated minutes). From two sizes: the cost of one more run
 # ((T(2N) - T(N)) / N) and the start-up (T(N) - N x that). Needs `gradle installDist` first.
 #   rp1-spark/src/bench/sweeps.sh [N_SHORT] [N_LONG]
 set -euo pipefail
@@ -13,7 +13,7 @@ work=$(mktemp -d)
 trap 'kill $cluster 2>/dev/null || true; wait 2>/dev/null; rm -rf "$work"' EXIT
 cd "$work"
 sed 's/^maxSimulationTime=.*/maxSimulationTime=60/' "$repo/Properties/bumper.ini" > short.ini
-sed 's/^maxSimulationTime=.*/maxSimulationTime=3600/' "$repo/Properties/bumper.ini" > long.ini
+sed 's/^maxSimulationTime=.*/maxSimulationTime=600/' "$repo/Properties/bumper.ini" > long.ini
 
 "$rp1" cluster --workers 2 --dir "$work/cluster" > cluster.out 2>&1 &
 cluster=$!

@@ -37,7 +37,9 @@ public final class Sweep {
     /** The option that writes every run's replay page beside its recording, linked from index.html. */
     private static final String HTML = "--html";
     private static final String USAGE = SweepOptions.USAGE + "\n  --html           also write each run's replay page"
-            + " (runs/SEED-PLAN/replay.html), linked from DIR/index.html";
+            + " (runs/SEED-PLAN/replay.html), linked from DIR/index.html"
+            + "\n  --master URL     run on Apache Spark: local[N] or spark://HOST:PORT (rp1 cluster starts one);"
+            + "\n                   rp1 sweep --master local -h says more";
     /** Exit status when some run failed. */
     public static final int RUN_FAILED = 2;
 

@@ -1,6 +1,8 @@
 package rp1.spark;
 
+import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import java.net.InetAddress;
 import java.net.URI;
 import java.nio.file.Paths;
@@ -82,8 +84,10 @@ public final class SparkSweep {
             return Sweep.run(rest.toArray(new String[0]), out, err, terminal, interruption);
         }
         if (rest.contains("-h") || rest.contains("--help")) {
-            int status = Sweep.run(new String[] {"--help"}, out, err, terminal, interruption);
-            out.println(USAGE);
+            ByteArrayOutputStream usage = new ByteArrayOutputStream();
+            int status = Sweep.run(new String[] {"--help"}, new PrintStream(usage, true, StandardCharsets.UTF_8), err,
+                    terminal, interruption);
+            out.println(usage.toString(StandardCharsets.UTF_8).replaceAll("(?s)\\n  --master URL.*", "") + "\n" + USAGE);
             return status;
         }
         JavaSparkContext spark;
