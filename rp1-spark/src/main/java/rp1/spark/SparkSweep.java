@@ -113,13 +113,16 @@ public final class SparkSweep {
 
     /**
      * The context's settings: the master, and, unless set already ({@code -Dspark.KEY=VALUE}), no web
-     * page, 512 MB executors, the executors' class path the driver's (an rp1 installed at the same
+     * page, 512 MB executors with the quick compiler only, the executors' class path the driver's (an rp1 installed at the same
      * place on every machine), and on a loopback master, a driver on the loopback address.
      */
     static SparkConf conf(String master) {
         SparkConf conf = new SparkConf().setMaster(master).setAppName("rp1 sweep")
                 .setIfMissing("spark.ui.enabled", "false")
                 .setIfMissing("spark.executor.memory", "512m")
+                // As ./rp1 sweep runs: each run's robot classes are new classes, compiled anew, and a
+                // run computes for milliseconds, which the optimizing compiler's work never pays back.
+                .setIfMissing("spark.executor.extraJavaOptions", "-XX:TieredStopAtLevel=1")
                 .setIfMissing("spark.executor.extraClassPath", System.getProperty("java.class.path"));
         if (master.startsWith("local") || loopback(master)) {
             conf.setIfMissing("spark.driver.host", "127.0.0.1").setIfMissing("spark.driver.bindAddress", "127.0.0.1");
