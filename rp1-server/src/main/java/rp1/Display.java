@@ -45,7 +45,9 @@ final class Display {
 
     private static boolean local(int number) {
         Path socket = Path.of("/tmp/.X11-unix/X" + number);
-        try (SocketChannel channel = SocketChannel.open(UnixDomainSocketAddress.of(socket))) {
+        try {
+            // Connecting is the whole probe: the channel is closed at once.
+            SocketChannel.open(UnixDomainSocketAddress.of(socket)).close();
             return true;
         } catch (IOException | UnsupportedOperationException e) {
             // Some X servers listen only on TCP even for ":N".

@@ -35,6 +35,13 @@ public class RsBody extends RsComponent {
     public boolean collision;
 
     private final ArrayList<RsBodyPart> parts = new ArrayList<>();
+    /**
+     * The sensors in part order, kept because the simulator reads them at every motion step of every
+     * robot; rebuilt when a part is added. Never handed out: callers get a copy.
+     */
+    private transient RsBodySensor[] sensors;
+    /** The interactive shapes in part order, kept for the same reason (every motion is searched with them). */
+    private transient RsBodyShape[] interactive;
     private int bodyID;
 
     /** An empty body; null is kept as the name and transmitted as "". */
@@ -53,6 +60,8 @@ public class RsBody extends RsComponent {
             throw new IllegalArgumentException("part is null");
         }
         parts.add(part);
+        sensors = null;
+        interactive = null;
         part.joined(this);
         if (part instanceof RsWheelSystem) {
             wheelSystem = (RsWheelSystem) part;
@@ -72,7 +81,16 @@ public class RsBody extends RsComponent {
 
     /** The sensors, in part order. */
     public RsBodySensor[] getBodySensorArray() {
-        return partsOf(RsBodySensor.class).toArray(new RsBodySensor[0]);
+        return sensors().clone();
+    }
+
+    private RsBodySensor[] sensors() {
+        RsBodySensor[] s = sensors;
+        if (s == null) {
+            s = partsOf(RsBodySensor.class).toArray(new RsBodySensor[0]);
+            sensors = s;
+        }
+        return s;
     }
 
     /**
@@ -80,13 +98,22 @@ public class RsBody extends RsComponent {
      * all sensors and painters, in part order. Wheel systems, wheels and art are not included.
      */
     public RsBodyShape[] getInteractiveBodyShapeArray() {
-        List<RsBodyShape> shapes = new ArrayList<>();
-        for (RsBodyShape s : partsOf(RsBodyShape.class)) {
-            if (!(s instanceof RsWheel)) {
-                shapes.add(s);
+        return interactive().clone();
+    }
+
+    private RsBodyShape[] interactive() {
+        RsBodyShape[] kept = interactive;
+        if (kept == null) {
+            List<RsBodyShape> shapes = new ArrayList<>();
+            for (RsBodyShape s : partsOf(RsBodyShape.class)) {
+                if (!(s instanceof RsWheel)) {
+                    shapes.add(s);
+                }
             }
+            kept = shapes.toArray(new RsBodyShape[0]);
+            interactive = kept;
         }
-        return shapes.toArray(new RsBodyShape[0]);
+        return kept;
     }
 
     private <T extends RsBodyPart> List<T> partsOf(Class<T> type) {
@@ -220,7 +247,7 @@ public class RsBody extends RsComponent {
      */
     public boolean processSensors(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
         boolean changed = false;
-        for (RsBodySensor s : getBodySensorArray()) {
+        for (RsBodySensor s : sensors()) {
             if (s.computeAndSetState(simTime, plan, walls, pose)) {
                 changed = true;
             }
@@ -313,7 +340,7 @@ public class RsBody extends RsComponent {
         }
         flagContactSensors(walls);
         boolean hit = false;
-        for (RsBodyShape s : getInteractiveBodyShapeArray()) {
+        for (RsBodyShape s : interactive()) {
             if (s.searchForCollisions(walls, motion)) {
                 hit = true;
             }
@@ -454,7 +481,7 @@ public class RsBody extends RsComponent {
 
     /** As {@link #checkForOverlap(RsPlan, RsTransform)}, against {@code walls}. */
     public boolean checkForOverlap(RsWall[] walls, RsTransform pose) {
-        for (RsBodyShape s : getInteractiveBodyShapeArray()) {
+        for (RsBodyShape s : interactive()) {
             if (s.checkForOverlap(walls, pose)) {
                 return true;
             }

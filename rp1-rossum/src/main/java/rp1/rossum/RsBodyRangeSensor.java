@@ -106,7 +106,7 @@ public class RsBodyRangeSensor extends RsBodySensor {
      */
     @Override
     public boolean computeAndSetState(double simTime, RsPlan plan, RsTransform pose) {
-        return computeAndSetState(simTime, plan, plan == null ? null : plan.getWallArray(), pose);
+        return computeAndSetState(simTime, plan, wallsOf(plan), pose);
     }
 
     /** The ray is cast against {@code walls}: the plan's walls and, in the simulator, other robots. */
@@ -135,7 +135,7 @@ public class RsBodyRangeSensor extends RsBodySensor {
         objectDetected = nearestWall;
         objectName = hot ? nearestWall.getName() : null;
         range = hot ? nearest * maxRange : 0.0;
-        rBin = hot ? Math.min((int) Math.floor(nRangeBin * range / maxRange), nRangeBin - 1) : previousBin;
+        rBin = hot ? rangeBinOf(range, maxRange, nRangeBin) : previousBin;
         boolean changed = hot ? !wasHot || rBin != previousBin : wasHot;
         return recordEvaluation(simTime, changed);
     }

@@ -94,4 +94,14 @@ public abstract class RsBodySensor extends RsBodyShape {
     static String nameOrEmpty(String name) {
         return name == null ? "" : name;
     }
+
+    /** What blocks a range or target sensor's view when only the plan is given: its walls. */
+    static RsWall[] wallsOf(RsPlan plan) {
+        return plan == null ? null : plan.getWallArray();
+    }
+
+    /** The range bin, 0..nRangeBin - 1, of a detection at {@code range} (below {@code maxRange}). */
+    static int rangeBinOf(double range, double maxRange, int nRangeBin) {
+        return Math.min((int) Math.floor(nRangeBin * range / maxRange), nRangeBin - 1);
+    }
 }

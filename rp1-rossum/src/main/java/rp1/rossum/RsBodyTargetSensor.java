@@ -147,7 +147,7 @@ public class RsBodyTargetSensor extends RsBodySensor {
      */
     @Override
     public boolean computeAndSetState(double simTime, RsPlan plan, RsTransform pose) {
-        return computeAndSetState(simTime, plan, plan == null ? null : plan.getWallArray(), pose);
+        return computeAndSetState(simTime, plan, wallsOf(plan), pose);
     }
 
     /** Targets of {@code plan} are sought; {@code walls} (the plan's walls, and in the simulator other robots) hide them. */
@@ -218,7 +218,7 @@ public class RsBodyTargetSensor extends RsBodySensor {
             if (tY < 0) {
                 b = -b;
             }
-            accept(target, r, b, tX, tY, widthBin(b), rangeBin(r));
+            accept(target, r, b, tX, tY, widthBin(b), rangeBinOf(r, maxRange, nRangeBin));
             best = r;
         }
     }
@@ -254,10 +254,6 @@ public class RsBodyTargetSensor extends RsBodySensor {
         }
         int bin = (int) Math.floor(nWidthBin * (b + halfWidth) / width);
         return Math.max(0, Math.min(bin, nWidthBin - 1));
-    }
-
-    private int rangeBin(double r) {
-        return Math.min((int) Math.floor(nRangeBin * r / maxRange), nRangeBin - 1);
     }
 
     /**

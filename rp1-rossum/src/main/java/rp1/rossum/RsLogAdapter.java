@@ -19,14 +19,12 @@ public abstract class RsLogAdapter implements RsLogInterface {
 
     @Override
     public void log(String message) {
-        logIt("s", message);
+        LogLevels.standard(this, message);
     }
 
     @Override
     public void verbose(String message) {
-        if (verbosity) {
-            logIt("v", message);
-        }
+        LogLevels.verbose(this, verbosity, message);
     }
 
     @Override

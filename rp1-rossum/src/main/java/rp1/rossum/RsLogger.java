@@ -63,14 +63,12 @@ public class RsLogger extends Thread implements RsLogInterface {
 
     @Override
     public synchronized void log(String message) {
-        logIt("s", message);
+        LogLevels.standard(this, message);
     }
 
     @Override
     public void verbose(String message) {
-        if (getVerbosity()) {
-            logIt("v", message);
-        }
+        LogLevels.verbose(this, getVerbosity(), message);
     }
 
     @Override

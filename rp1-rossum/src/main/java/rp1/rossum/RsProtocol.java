@@ -1,5 +1,7 @@
 package rp1.rossum;
 
+import static rp1.rossum.wire.Closing.closeQuietly;
+
 import java.awt.Color;
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
@@ -201,14 +203,12 @@ public class RsProtocol implements RsLogInterface {
 
     @Override
     public void log(String message) {
-        logIt("s", message);
+        LogLevels.standard(this, message);
     }
 
     @Override
     public void verbose(String message) {
-        if (verbosity) {
-            logIt("v", message);
-        }
+        LogLevels.verbose(this, verbosity, message);
     }
 
     @Override
@@ -447,17 +447,6 @@ public class RsProtocol implements RsLogInterface {
         RsProtocolShutdownHandler handler = shutdownHandler;
         if (handler != null) {
             handler.process();
-        }
-    }
-
-    private static void closeQuietly(AutoCloseable c) {
-        if (c == null) {
-            return;
-        }
-        try {
-            c.close();
-        } catch (Exception ignored) {
-            // Closing a stream that already failed tells us nothing new.
         }
     }
 

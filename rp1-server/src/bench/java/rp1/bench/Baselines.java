@@ -2,6 +2,7 @@ package rp1.bench;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
+import java.io.Closeable;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
@@ -21,10 +22,10 @@ import java.net.Socket;
 final class Baselines implements RoundTrips {
     private final DataInputStream in;
     private final DataOutputStream out;
-    private final AutoCloseable resource;
+    private final Closeable resource;
     private int value;
 
-    private Baselines(InputStream rawIn, OutputStream rawOut, AutoCloseable resource) {
+    private Baselines(InputStream rawIn, OutputStream rawOut, Closeable resource) {
         this.in = new DataInputStream(new BufferedInputStream(rawIn));
         this.out = new DataOutputStream(new BufferedOutputStream(rawOut));
         this.resource = resource;
@@ -99,7 +100,7 @@ final class Baselines implements RoundTrips {
     }
 
     @Override
-    public void close() throws Exception {
+    public void close() throws IOException {
         resource.close();
     }
 }

@@ -15,8 +15,9 @@ import rp1.simulator.launch.StartupException;
 /**
  * {@code gradle bench}: the figures of docs/performance.md. Arguments: {@code all} (default), or any of
  * {@code latency}, {@code connect}, {@code cold}, {@code pacing}, {@code throughput}, {@code longrun},
- * {@code network}; {@code robots=1,100,1000} chooses the robot counts of the throughput runs,
- * {@code xmx=512m} their heap. Figures only; nothing is asserted.
+ * {@code network}, {@code scale} (the peers' "scale arena" workload, {@link ScaleArena});
+ * {@code robots=1,100,1000} chooses the robot counts of the throughput and scale runs, {@code xmx=512m}
+ * their heap. Figures only; nothing is asserted.
  */
 public final class Bench {
     private static final double MEASURE_SECONDS = 3.0;
@@ -59,6 +60,15 @@ public final class Bench {
                         String.valueOf(n >= 1000 ? 2 * MEASURE_SECONDS : MEASURE_SECONDS));
                 if (status != 0) {
                     System.out.println(n + " robots: the run failed with status " + status);
+                }
+            }
+        }
+        if (all || what.contains("scale")) {
+            for (int n : robots) {
+                int status = Child.run(xmx, ScaleArena.class, System.out::println, String.valueOf(n),
+                        String.valueOf(ScaleArena.simulatedFor(n)), String.valueOf(ScaleArena.arenaFor(n)));
+                if (status != 0) {
+                    System.out.println(n + " robots in the scale arena: the run failed with status " + status);
                 }
             }
         }

@@ -130,11 +130,18 @@ final class TestDisplay implements AutoCloseable {
         return xvfb != null;
     }
 
-    /** Stops the virtual display, if one was started. */
+    /**
+     * Stops the virtual display, if one was started. An interrupt while waiting for it to stop is
+     * kept on the thread rather than thrown, so that it cannot hide the test's own failure.
+     */
     @Override
-    public void close() throws InterruptedException {
+    public void close() {
         if (xvfb != null) {
-            stop(xvfb);
+            try {
+                stop(xvfb);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
         }
     }
 }

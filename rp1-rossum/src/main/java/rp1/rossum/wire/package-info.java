@@ -9,9 +9,10 @@
  * ({@link rp1.rossum.wire.RequestCodec}) and what it decodes into, the typed
  * {@link rp1.rossum.wire.RequestListener} a server sets on its connection; the message-end scanner of
  * a non-blocking reader ({@link rp1.rossum.wire.MessageScanner}); the packing of an (event code, index)
- * pair into one key ({@link rp1.rossum.wire.EventKey}); and the limits by which a motion request
+ * pair into one key ({@link rp1.rossum.wire.EventKey}); the limits by which a motion request
  * becomes a null, straight or turning motion ({@link rp1.rossum.wire.MotionLimits}), which the server's
- * wall search must apply exactly as the body does. The server needs all of these, and in
+ * wall search must apply exactly as the body does; and the quiet closing of a connection's sockets and
+ * streams ({@link rp1.rossum.wire.Closing}). The server needs all of these, and in
  * {@code rp1.rossum} they could only be package-private (0.60's API there is fixed) or public
  * additions to that API.
  *

@@ -1,5 +1,7 @@
 package rp1.simulator.net;
 
+import static rp1.rossum.wire.Closing.closeQuietly;
+
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
@@ -429,13 +431,5 @@ public final class ClientListener {
         closed = true;
         closeQuietly(serverSocket);
         selector.wakeup();
-    }
-
-    private static void closeQuietly(AutoCloseable c) {
-        try {
-            c.close();
-        } catch (Exception ignored) {
-            // Closing a socket that is being abandoned; nothing useful to do if it fails.
-        }
     }
 }

@@ -14,6 +14,11 @@ final class Outlines {
     private final double[] minY;
     private final double[] maxX;
     private final double[] maxY;
+    /**
+     * Per polygon: how far its farthest vertex is from the middle of its box (a bound for pruning), NaN
+     * until a distance needs it (most outlines are only tested for overlap).
+     */
+    private final double[] radius;
 
     private Outlines(int n) {
         xs = new double[n][];
@@ -22,6 +27,7 @@ final class Outlines {
         minY = new double[n];
         maxX = new double[n];
         maxY = new double[n];
+        radius = new double[n];
     }
 
     /** {@code outlines} (each x0, y0, x1, y1, ... in body coordinates) placed at {@code pose}. */
@@ -52,6 +58,7 @@ final class Outlines {
             o.minY[i] = y0;
             o.maxX[i] = x1;
             o.maxY[i] = y1;
+            o.radius[i] = Double.NaN;
         }
         return o;
     }
@@ -79,7 +86,7 @@ final class Outlines {
                 if (polygonsOverlap(i, other, j)) {
                     return 0.0;
                 }
-                best = Math.min(best, Math.sqrt(squaredDistance(xs[i], ys[i], other.xs[j], other.ys[j])));
+                best = Math.min(best, Math.sqrt(squaredDistance(i, other, j, best)));
             }
         }
         return best;
@@ -94,7 +101,8 @@ final class Outlines {
 
     /** Whether polygon i of this and polygon j of {@code o} overlap or touch. */
     private boolean polygonsOverlap(int i, Outlines o, int j) {
-        return edgesTouch(xs[i], ys[i], o.xs[j], o.ys[j])
+        return edgesTouch(xs[i], ys[i], o.xs[j], o.ys[j], o.minX[j], o.minY[j], o.maxX[j], o.maxY[j], minX[i], minY[i],
+                maxX[i], maxY[i])
                 || (o.inBox(j, xs[i][0], ys[i][0]) && contains(o.xs[j], o.ys[j], xs[i][0], ys[i][0]))
                 || (inBox(i, o.xs[j][0], o.ys[j][0]) && contains(xs[i], ys[i], o.xs[j][0], o.ys[j][0]));
     }
@@ -103,12 +111,35 @@ final class Outlines {
         return x >= minX[i] && x <= maxX[i] && y >= minY[i] && y <= maxY[i];
     }
 
-    private static boolean edgesTouch(double[] ax, double[] ay, double[] bx, double[] by) {
+    /**
+     * Whether an edge of polygon a touches an edge of polygon b (whose boxes are [bx0, bx1] x [by0, by1]
+     * and [ax0, ax1] x [ay0, ay1]). An edge whose box misses the other polygon's box is passed over: it
+     * would fail {@link #segmentsTouch}'s own box test against every edge of that polygon.
+     */
+    private static boolean edgesTouch(double[] ax, double[] ay, double[] bx, double[] by, double bx0, double by0,
+                                      double bx1, double by1, double ax0, double ay0, double ax1, double ay1) {
         int na = ax.length;
         int nb = bx.length;
+        int[] near = new int[nb];
+        int m = 0;
+        for (int j = 0; j < nb; j++) {
+            int j1 = j + 1 == nb ? 0 : j + 1;
+            if (!(Math.max(bx[j], bx[j1]) < ax0 || ax1 < Math.min(bx[j], bx[j1])
+                    || Math.max(by[j], by[j1]) < ay0 || ay1 < Math.min(by[j], by[j1]))) {
+                near[m++] = j;
+            }
+        }
+        if (m == 0) {
+            return false;
+        }
         for (int i = 0; i < na; i++) {
             int i1 = i + 1 == na ? 0 : i + 1;
-            for (int j = 0; j < nb; j++) {
+            if (Math.max(ax[i], ax[i1]) < bx0 || bx1 < Math.min(ax[i], ax[i1])
+                    || Math.max(ay[i], ay[i1]) < by0 || by1 < Math.min(ay[i], ay[i1])) {
+                continue;
+            }
+            for (int k = 0; k < m; k++) {
+                int j = near[k];
                 int j1 = j + 1 == nb ? 0 : j + 1;
                 if (segmentsTouch(ax[i], ay[i], ax[i1], ay[i1], bx[j], by[j], bx[j1], by[j1])) {
                     return true;
@@ -119,7 +150,7 @@ final class Outlines {
     }
 
     /** Whether segments p and q share a point (end points included; collinear overlap counts). */
-    private static boolean segmentsTouch(double px0, double py0, double px1, double py1,
+    static boolean segmentsTouch(double px0, double py0, double px1, double py1,
                                          double qx0, double qy0, double qx1, double qy1) {
         if (Math.max(px0, px1) < Math.min(qx0, qx1) || Math.max(qx0, qx1) < Math.min(px0, px1)
                 || Math.max(py0, py1) < Math.min(qy0, qy1) || Math.max(qy0, qy1) < Math.min(py0, py1)) {
@@ -137,7 +168,7 @@ final class Outlines {
     }
 
     /** Even-odd containment of (px, py) in the polygon; each edge ends where the next begins. */
-    private static boolean contains(double[] x, double[] y, double px, double py) {
+    static boolean contains(double[] x, double[] y, double px, double py) {
         int n = x.length;
         if (n < 3) {
             return false;
@@ -151,21 +182,119 @@ final class Outlines {
         return inside;
     }
 
-    /** The squared distance between two polygons that do not overlap: the nearest vertex to edge, either way. */
-    private static double squaredDistance(double[] ax, double[] ay, double[] bx, double[] by) {
-        return Math.min(verticesToEdges(ax, ay, bx, by), verticesToEdges(bx, by, ax, ay));
+    /**
+     * The squared distance between polygon i of this and polygon j of {@code o}, which do not overlap:
+     * the nearest vertex to edge, either way. Exactly that minimum when its root is below {@code limit};
+     * otherwise a value whose root is at least {@code limit}. Vertex-edge pairs that cannot come below
+     * the best so far are skipped (the vertex is too far from the other polygon's box or circle, or
+     * from the edge's box): a minimum depends neither on the order nor on candidates that cannot win,
+     * so the value is bit for bit what trying every pair gives.
+     */
+    private double squaredDistance(int i, Outlines o, int j, double limit) {
+        Nearest n = new Nearest(limit);
+        n.verticesToEdges(xs[i], ys[i], o.xs[j], o.ys[j], o.minX[j], o.minY[j], o.maxX[j], o.maxY[j], o.radius(j));
+        n.verticesToEdges(o.xs[j], o.ys[j], xs[i], ys[i], minX[i], minY[i], maxX[i], maxY[i], radius(i));
+        return n.best;
     }
 
-    private static double verticesToEdges(double[] px, double[] py, double[] ex, double[] ey) {
+    private double radius(int i) {
+        if (Double.isNaN(radius[i])) {
+            double cx = 0.5 * (minX[i] + maxX[i]);
+            double cy = 0.5 * (minY[i] + maxY[i]);
+            double r2 = 0.0;
+            for (int k = 0; k < xs[i].length; k++) {
+                r2 = Math.max(r2, (xs[i][k] - cx) * (xs[i][k] - cx) + (ys[i][k] - cy) * (ys[i][k] - cy));
+            }
+            radius[i] = Math.sqrt(r2);
+        }
+        return radius[i];
+    }
+
+    /** The running minimum of squared vertex-to-edge distances, and how far a candidate may be to matter. */
+    private static final class Nearest {
+        /**
+         * Slack on the pruning bound, metres: far above the rounding of any coordinate the simulator
+         * handles, so that no pair whose computed distance could win is skipped.
+         */
+        private static final double SLACK = 1.0e-9;
+        private final double limit;
         double best = Double.POSITIVE_INFINITY;
-        int n = ex.length;
-        for (int k = 0; k < px.length; k++) {
-            for (int i = 0; i < n; i++) {
-                int i1 = i + 1 == n ? 0 : i + 1;
-                best = Math.min(best, squaredToSegment(px[k], py[k], ex[i], ey[i], ex[i1], ey[i1]));
+        private double bound;
+        /** The root of {@link #bound}. */
+        private double reach;
+        /** The middle of the box of the polygon whose edges are tried, and its radius about it. */
+        private double cx;
+        private double cy;
+        private double r;
+
+        Nearest(double limit) {
+            this.limit = limit;
+            this.reach = limit + SLACK;
+            this.bound = square(reach);
+        }
+
+        /**
+         * Tries the vertices of p against the edges of e (whose box is [x0, x1] x [y0, y1]): first the
+         * vertex nearest the middle of that box, which soon gives a bound that rules most others out.
+         */
+        void verticesToEdges(double[] px, double[] py, double[] ex, double[] ey, double x0, double y0, double x1,
+                             double y1, double r) {
+            double cx = 0.5 * (x0 + x1);
+            double cy = 0.5 * (y0 + y1);
+            this.cx = cx;
+            this.cy = cy;
+            this.r = r + SLACK;
+            int first = 0;
+            double nearest = Double.POSITIVE_INFINITY;
+            for (int k = 0; k < px.length; k++) {
+                double d = square(px[k] - cx) + square(py[k] - cy);
+                if (d < nearest) {
+                    nearest = d;
+                    first = k;
+                }
+            }
+            vertexToEdges(px[first], py[first], ex, ey, x0, y0, x1, y1);
+            for (int k = 0; k < px.length; k++) {
+                if (k != first) {
+                    vertexToEdges(px[k], py[k], ex, ey, x0, y0, x1, y1);
+                }
             }
         }
-        return best;
+
+        private void vertexToEdges(double x, double y, double[] ex, double[] ey, double x0, double y0, double x1,
+                                   double y1) {
+            if (square(outside(x, x0, x1)) + square(outside(y, y0, y1)) > bound
+                    || square(x - cx) + square(y - cy) > square(r + reach)) {
+                return;
+            }
+            int n = ex.length;
+            for (int e = 0; e < n; e++) {
+                int e1 = e + 1 == n ? 0 : e + 1;
+                double ax = ex[e];
+                double bx = ex[e1];
+                double ay = ey[e];
+                double by = ey[e1];
+                double gx = outside(x, Math.min(ax, bx), Math.max(ax, bx));
+                double gy = outside(y, Math.min(ay, by), Math.max(ay, by));
+                if (gx * gx + gy * gy > bound) {
+                    continue;
+                }
+                double d = squaredToSegment(x, y, ax, ay, bx, by);
+                if (d < best) {
+                    best = d;
+                    reach = Math.min(limit, Math.sqrt(d)) + SLACK;
+                    bound = square(reach);
+                }
+            }
+        }
+
+        private static double outside(double v, double lo, double hi) {
+            return v < lo ? lo - v : (v > hi ? v - hi : 0.0);
+        }
+
+        private static double square(double v) {
+            return v * v;
+        }
     }
 
     /** The squared distance from point (px, py) to the segment (x0, y0)-(x1, y1). */

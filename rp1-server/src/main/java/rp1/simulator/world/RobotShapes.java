@@ -16,14 +16,12 @@ import rp1.rossum.RsWall;
 final class RobotShapes {
     private final double[][] outlines;
     private final double reach;
-    /** The last pose {@link #asWalls} was asked for and its answer. */
-    private double w11;
-    private double w12;
-    private double w13;
-    private double w21;
-    private double w22;
-    private double w23;
+    /** The last pose {@link #asWalls} was asked for, and its answer. */
+    private final LastPose wallsPose = new LastPose();
     private RsWall[] walls;
+    /** The last pose {@link #outlinesAt} was asked for, and its answer. */
+    private final LastPose outlinesPose = new LastPose();
+    private Outlines placed;
 
     RobotShapes(RsBody body) {
         RsBodyShape[] shapes = body.getInteractiveBodyShapeArray();
@@ -53,22 +51,11 @@ final class RobotShapes {
      * the last pose is kept; callers only read it.
      */
     RsWall[] asWalls(RsTransform pose, String name) {
-        if (walls == null || !same(pose.m11, w11) || !same(pose.m12, w12) || !same(pose.m13, w13)
-                || !same(pose.m21, w21) || !same(pose.m22, w22) || !same(pose.m23, w23)) {
+        if (walls == null || !wallsPose.is(pose)) {
             walls = wallsAt(pose, name);
-            w11 = pose.m11;
-            w12 = pose.m12;
-            w13 = pose.m13;
-            w21 = pose.m21;
-            w22 = pose.m22;
-            w23 = pose.m23;
+            wallsPose.set(pose);
         }
         return walls;
-    }
-
-    /** Bit for bit the same value (as {@link Arrays#equals(double[], double[])} compares). */
-    private static boolean same(double a, double b) {
-        return Double.doubleToLongBits(a) == Double.doubleToLongBits(b);
     }
 
     private RsWall[] wallsAt(RsTransform pose, String name) {
@@ -84,9 +71,17 @@ final class RobotShapes {
         return n == walls.length ? walls : Arrays.copyOf(walls, n);
     }
 
-    /** The shapes placed at {@code pose}. */
+    /**
+     * The shapes placed at {@code pose}. The contact search asks for a robot's outlines at every sample
+     * of every pair it is in, and a robot at rest is always at the same pose, so the answer for the last
+     * pose is kept (outlines are never changed once made).
+     */
     Outlines outlinesAt(RsTransform pose) {
-        return Outlines.at(outlines, pose);
+        if (placed == null || !outlinesPose.is(pose)) {
+            placed = Outlines.at(outlines, pose);
+            outlinesPose.set(pose);
+        }
+        return placed;
     }
 
     private static double[] map(double[] outline, RsTransform pose) {

@@ -20,6 +20,15 @@ final class Sight {
     /** Per target sensor: detector x, detector y, maximum range. */
     private final double[][] fields;
     private final double reach;
+    /** The rays' ends and the fields' centres at the pose {@link #at} (once {@link #aimed}). */
+    private final double[] rayX0;
+    private final double[] rayY0;
+    private final double[] rayX1;
+    private final double[] rayY1;
+    private final double[] fieldX;
+    private final double[] fieldY;
+    private final LastPose at = new LastPose();
+    private boolean aimed;
 
     Sight(RsBody body) {
         List<double[]> r = new ArrayList<>();
@@ -39,6 +48,12 @@ final class Sight {
         rays = r.toArray(new double[0][]);
         fields = f.toArray(new double[0][]);
         reach = max;
+        rayX0 = new double[rays.length];
+        rayY0 = new double[rays.length];
+        rayX1 = new double[rays.length];
+        rayY1 = new double[rays.length];
+        fieldX = new double[fields.length];
+        fieldY = new double[fields.length];
     }
 
     /** How far from the body origin the sensors reach, metres (0 without any). */
@@ -51,24 +66,46 @@ final class Sight {
      * {@code radius} of (x, y): its ray passes that close, or it lies within a target sensor's range.
      */
     boolean mightSee(RsTransform pose, double x, double y, double radius) {
-        double theta = pose.getTheta();
-        for (double[] ray : rays) {
-            double dx = pose.m11 * ray[0] + pose.m12 * ray[1] + pose.m13;
-            double dy = pose.m21 * ray[0] + pose.m22 * ray[1] + pose.m23;
-            double ex = dx + ray[3] * Math.cos(theta + ray[2]);
-            double ey = dy + ray[3] * Math.sin(theta + ray[2]);
-            if (Outlines.squaredToSegment(x, y, dx, dy, ex, ey) <= radius * radius) {
+        aim(pose);
+        for (int i = 0; i < rays.length; i++) {
+            if (Outlines.squaredToSegment(x, y, rayX0[i], rayY0[i], rayX1[i], rayY1[i]) <= radius * radius) {
                 return true;
             }
         }
-        for (double[] field : fields) {
-            double dx = pose.m11 * field[0] + pose.m12 * field[1] + pose.m13;
-            double dy = pose.m21 * field[0] + pose.m22 * field[1] + pose.m23;
-            double limit = field[2] + radius;
+        for (int i = 0; i < fields.length; i++) {
+            double dx = fieldX[i];
+            double dy = fieldY[i];
+            double limit = fields[i][2] + radius;
             if ((x - dx) * (x - dx) + (y - dy) * (y - dy) <= limit * limit) {
                 return true;
             }
         }
         return false;
+    }
+
+    /**
+     * Places the rays and fields at {@code pose}, unless they already are: a robot's sensors are asked
+     * about every robot near it at the same pose, and a ray's direction costs an arc tangent, a sine
+     * and a cosine.
+     */
+    private void aim(RsTransform pose) {
+        if (aimed && at.is(pose)) {
+            return;
+        }
+        double theta = pose.getTheta();
+        for (int i = 0; i < rays.length; i++) {
+            double[] ray = rays[i];
+            rayX0[i] = pose.m11 * ray[0] + pose.m12 * ray[1] + pose.m13;
+            rayY0[i] = pose.m21 * ray[0] + pose.m22 * ray[1] + pose.m23;
+            rayX1[i] = rayX0[i] + ray[3] * Math.cos(theta + ray[2]);
+            rayY1[i] = rayY0[i] + ray[3] * Math.sin(theta + ray[2]);
+        }
+        for (int i = 0; i < fields.length; i++) {
+            double[] field = fields[i];
+            fieldX[i] = pose.m11 * field[0] + pose.m12 * field[1] + pose.m13;
+            fieldY[i] = pose.m21 * field[0] + pose.m22 * field[1] + pose.m23;
+        }
+        at.set(pose);
+        aimed = true;
     }
 }

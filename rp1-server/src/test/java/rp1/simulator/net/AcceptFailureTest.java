@@ -27,6 +27,9 @@ import rp1.simulator.SimulationSettings;
 @Timeout(30)
 class AcceptFailureTest {
     @Test
+    // "try": the client socket `waiting` is never used in its try block; it only has to stay
+    // connected, waiting in the backlog, while accepting fails.
+    @SuppressWarnings("try")
     void aFailingAcceptIsRetriedAfterAPauseAndLoggedAtMostOnceASecond() throws Exception {
         List<String> lines = new ArrayList<>();
         RsLogAdapter log = new RsLogAdapter() {
