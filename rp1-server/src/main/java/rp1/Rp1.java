@@ -14,7 +14,8 @@ import rp1.simulator.launch.ServerMain;
 /**
  * The {@code rp1} command of the installed simulator ({@code bin/rp1}, {@code ./rp1} in the
  * repository, {@code java -jar rp1-server-VERSION.jar}): the simulator, or {@code rp1 replay} and
- * {@code rp1 sweep}. Every file named is relative to the working directory.
+ * {@code rp1 sweep} (on Apache Spark with {@code --master}, and {@code rp1 cluster}: {@link SparkCommand}).
+ * Every file named is relative to the working directory.
  *
  * <p>Without {@code -p} the simulator runs a demo: ClientZero in a window
  * ({@code Properties/RP1.ini}), or, with no display to open one on ({@code --headless},
@@ -30,6 +31,8 @@ public final class Rp1 {
             "usage: rp1 [-p PROPERTIES] [-f FLOORPLAN] [--port N] [--headless] [-cp PATH]",
             "       rp1 replay RECORDING [--events OUT] [--snapshot OUT.png] [--until T]",
             "       rp1 sweep -p PROPERTIES --seeds SEEDS --out DIR [--plans A,B] [--jobs N] [--timeout S] [-cp PATH]",
+            "                 [--master local[N]|spark://HOST:PORT [--keep NAMES]]",
+            "       rp1 cluster [--workers N]      a Spark cluster on this machine, for rp1 sweep --master",
             "Without -p: a demo robot, in a window (Properties/RP1.ini), or without a display headless",
             "(Properties/headless.ini, its picture in firefighter.png). rp1 replay -h and rp1 sweep -h say more.",
             "",
@@ -40,8 +43,13 @@ public final class Rp1 {
 
     /** Runs the command; the process exits with its status. */
     public static void main(String[] args) {
-        if (args.length > 0 && args[0].equals("sweep")) {
-            Sweep.main(Arrays.copyOfRange(args, 1, args.length));
+        String[] rest = args.length > 0 ? Arrays.copyOfRange(args, 1, args.length) : args;
+        if (args.length > 0 && args[0].equals("sweep") && SparkCommand.wanted(rest)) {
+            System.exit(SparkCommand.run(SparkCommand.SWEEP, rest, System.err));
+        } else if (args.length > 0 && args[0].equals("cluster")) {
+            System.exit(SparkCommand.run(SparkCommand.CLUSTER, rest, System.err));
+        } else if (args.length > 0 && args[0].equals("sweep")) {
+            Sweep.main(rest);
         } else if (args.length > 0 && args[0].equals("replay")) {
             Replay.main(Arrays.copyOfRange(args, 1, args.length));
         } else {

@@ -13,6 +13,7 @@ import rp1.simulator.batch.Interruption;
 import rp1.simulator.batch.Progress;
 import rp1.simulator.batch.ResultsCsv;
 import rp1.simulator.batch.ResultsNotes;
+import rp1.simulator.batch.RunEngine;
 import rp1.simulator.batch.SummaryCsv;
 import rp1.simulator.batch.SweepException;
 import rp1.simulator.batch.SweepOptions;
@@ -36,7 +37,9 @@ public final class Sweep {
     /** The option that writes every run's replay page beside its recording, linked from index.html. */
     private static final String HTML = "--html";
     private static final String USAGE = SweepOptions.USAGE + "\n  --html           also write each run's replay page"
-            + " (runs/SEED-PLAN/replay.html), linked from DIR/index.html";
+            + " (runs/SEED-PLAN/replay.html), linked from DIR/index.html"
+            + "\n  --master URL     run on Apache Spark: local[N] or spark://HOST:PORT (rp1 cluster starts one);"
+            + "\n                   rp1 sweep --master local -h says more";
     /** Exit status when some run failed. */
     public static final int RUN_FAILED = 2;
 
@@ -74,6 +77,17 @@ public final class Sweep {
      * @return the exit status
      */
     public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption) {
+        return run(args, out, err, terminal, interruption, null);
+    }
+
+    /**
+     * Runs the sweep the command line asks for, its runs carried out by the engine {@code engines}
+     * makes (rp1-spark's), or by the one {@code --isolation} asks for if it is null.
+     *
+     * @return the exit status
+     */
+    public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption,
+                          RunEngine.Factory engines) {
         SweepOptions options;
         boolean pages = Arrays.asList(args).contains(HTML);
         try {
@@ -88,6 +102,9 @@ public final class Sweep {
         }
         try {
             Batch batch = Batch.prepare(options, Paths.get("").toAbsolutePath(), Sweep.class.getClassLoader());
+            if (engines != null) {
+                batch.useEngine(engines.open(batch));
+            }
             interruption.onStop(batch::stop);
             int toRun = batch.runs().size() - batch.kept().size();
             out.println("rp1.Sweep: " + batch.runs().size() + " runs (" + (options.varied.isEmpty() ? ""

@@ -1,6 +1,7 @@
 package rp1demo.install;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -145,8 +146,8 @@ class InstalledCommandTest {
         assertTrue(Files.exists(dir.resolve("mine.rec")));
     }
 
-    @Test
-    void aRobotCompiledApartRunsInASweepWithItsClassPath() throws Exception {
+    /** A robot compiled apart into dir/classes, and still.ini, which loads it. */
+    private void stillRobot() throws IOException {
         Path source = dir.resolve("src/mybot/Still.java");
         Files.createDirectories(source.getParent());
         Files.writeString(source, String.join("\n",
@@ -166,7 +167,11 @@ class InstalledCommandTest {
         write("still.ini", "floorPlanFileName=WhiteRoom.txt", "enableGUI=false", "enableNetworkClients=false",
                 "interlockEnabled=true", "simulationSpeed=max", "maxSimulationTime=2", "dlcEnabled=true",
                 "dlcName=mybot.Still");
+    }
 
+    @Test
+    void aRobotCompiledApartRunsInASweepWithItsClassPath() throws Exception {
+        stillRobot();
         Result r = rp1("sweep", "-p", "still.ini", "--seeds", "1-2", "--jobs", "2", "--out", "out", "-cp", "classes");
         assertEquals(0, r.status(), r.output());
         List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
@@ -179,5 +184,37 @@ class InstalledCommandTest {
         Result apart = rp1("sweep", "-p", "still.ini", "--seeds", "1", "--isolation", "process", "--out", "apart",
                 "-cp", "classes");
         assertEquals(0, apart.status(), apart.output());
+    }
+
+    @Test
+    void onSparkTheRobotsClassesTravelWithTheJobAndTheRowsAreTheSweepsOwn() throws Exception {
+        stillRobot();
+        assertEquals(0, rp1("sweep", "-p", "still.ini", "--seeds", "1-3", "--out", "own", "-cp", "classes").status());
+        Result r = rp1("sweep", "-p", "still.ini", "--seeds", "1-3", "--out", "spark", "-cp", "classes",
+                "--master", "local[2]");
+        assertEquals(0, r.status(), r.output());
+        assertEquals(withoutWallTime(dir.resolve("own/results.csv")), withoutWallTime(dir.resolve("spark/results.csv")));
+        assertTrue(Files.exists(dir.resolve("spark/runs/2-WhiteRoom/recording.txt")), "the run's files came back");
+    }
+
+    @Test
+    void withoutMasterNoSparkClassIsOnTheCommandsClassPath() throws Exception {
+        String script = Files.readString(Paths.get(INSTALL, "bin", "rp1"));
+        String classPath = script.lines().filter(l -> l.startsWith("CLASSPATH=")).findFirst().orElseThrow();
+        assertFalse(classPath.contains("spark"), classPath);
+        assertTrue(Files.isDirectory(Paths.get(INSTALL, "lib", "spark")), "the Spark module is installed apart");
+    }
+
+    /** The rows of a results.csv without their wall-clock time, which no two runs share. */
+    private static List<String> withoutWallTime(Path results) throws IOException {
+        List<String> lines = Files.readAllLines(results);
+        int wall = List.of(lines.get(0).split(",")).indexOf("wall_seconds");
+        List<String> rows = new ArrayList<>();
+        for (String line : lines) {
+            List<String> cells = new ArrayList<>(List.of(line.split(",", -1)));
+            cells.remove(wall);
+            rows.add(String.join(",", cells));
+        }
+        return rows;
     }
 }

@@ -63,7 +63,10 @@ public final class Batch {
     private final SweepSpec spec;
     /** The runs finished by an earlier sweep into the same folder (--resume). */
     private final List<Outcome> kept;
-    private final RunEngine engine;
+    /** The robot's class path (-cp), made absolute. */
+    private final List<Path> classPath;
+    /** The engine --isolation asks for, or the one {@link #useEngine} gives. */
+    private volatile RunEngine engine;
     private volatile boolean stopping;
 
     /**
@@ -90,7 +93,7 @@ public final class Batch {
     }
 
     private Batch(SweepOptions options, Path out, String propertiesText, Map<String, RsPlan> plans, List<Run> runs,
-                  SweepSpec spec, List<Outcome> kept, RunEngine engine) {
+                  SweepSpec spec, List<Outcome> kept, List<Path> classPath, RunEngine engine) {
         this.options = options;
         this.out = out;
         this.propertiesText = propertiesText;
@@ -98,6 +101,7 @@ public final class Batch {
         this.runs = runs;
         this.spec = spec;
         this.kept = kept;
+        this.classPath = List.copyOf(classPath);
         this.engine = engine;
     }
 
@@ -147,7 +151,7 @@ public final class Batch {
                     ? new ProcessRuns(options.timeoutSeconds, classPath)
                     : new LoaderRuns(new ArrayList<>(robotClasses), ClientClassPath.loader(classPath, loader),
                             options.timeoutSeconds);
-            return new Batch(options, out, found.text, plans, runs, spec, kept, engine);
+            return new Batch(options, out, found.text, plans, runs, spec, kept, classPath, engine);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());
         } catch (StartupException e) {
@@ -270,6 +274,21 @@ public final class Batch {
             name = name.substring(0, name.length() - 4);
         }
         return name.replaceAll("[^A-Za-z0-9._-]", "_");
+    }
+
+    /** The options the sweep was prepared with. */
+    public SweepOptions options() {
+        return options;
+    }
+
+    /** The robot's class path (-cp), made absolute; empty when its classes are the simulator's. */
+    public List<Path> robotClassPath() {
+        return classPath;
+    }
+
+    /** Carries out the runs with {@code engine} (rp1-spark's) rather than the one --isolation chose. */
+    public void useEngine(RunEngine engine) {
+        this.engine = engine;
     }
 
     /** The folder the results go to. */

@@ -3,8 +3,12 @@ package rp1.simulator.batch;
 import java.io.IOException;
 import java.util.List;
 
-/** Carries out a sweep's runs one way or another ({@code --isolation}). Any thread; several runs at once. */
-interface RunEngine {
+/**
+ * Carries out a sweep's runs one way or another ({@code --isolation}, or one given by a
+ * {@link Factory}, such as rp1-spark's, which runs them on a Spark cluster). Any thread; several
+ * runs at once.
+ */
+public interface RunEngine {
     /** How a run went, and its robots' trails. */
     record Ran(RunReport report, List<Trail> trails) {
     }
@@ -18,4 +22,23 @@ interface RunEngine {
 
     /** Stops the runs going, as Ctrl-C would stop a server; returns at once. */
     void stopAll();
+
+    /**
+     * The sweep's engine for runs in this process ({@code --isolation loader}): each with a class
+     * loader of its own for the robot's classes and a world of its own. rp1-spark's executors run
+     * their tasks with it.
+     *
+     * @param robotClasses the robots' classes (dlcName), found through {@code parent}
+     */
+    static RunEngine inThisProcess(List<String> robotClasses, ClassLoader parent, double timeoutSeconds) {
+        return new LoaderRuns(robotClasses, parent, timeoutSeconds);
+    }
+
+    /** Makes the engine for a sweep once the sweep is prepared (its runs and robot class path known). */
+    interface Factory {
+        /**
+         * @throws SweepException saying why the runs cannot be carried out this way
+         */
+        RunEngine open(Batch batch) throws SweepException;
+    }
 }
