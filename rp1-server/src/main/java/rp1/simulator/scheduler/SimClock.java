@@ -67,7 +67,12 @@ public final class SimClock {
 
     /** A clock that never reads the wall clock: time is the time of the task being run. */
     public static SimClock lockstep() {
-        return new SimClock(null, Double.POSITIVE_INFINITY, true, true);
+        return lockstep(TimeSource.SYSTEM);
+    }
+
+    /** A lockstep clock that reads {@code wall} only if it is {@link #setSpeed(double, double) slowed down}. */
+    public static SimClock lockstep(TimeSource wall) {
+        return new SimClock(wall, Double.POSITIVE_INFINITY, true, true);
     }
 
     /** A lockstep clock on which {@link #hold()} has no effect, for replaying a recorded run. */

@@ -29,8 +29,8 @@ class ClockControlTest {
         return s;
     }
 
-    private static Scheduler lockstep() {
-        Scheduler s = new Scheduler(SimClock.lockstep());
+    private Scheduler lockstep() {
+        Scheduler s = new Scheduler(SimClock.lockstep(() -> wallNanos[0]));
         s.begin();
         return s;
     }
@@ -157,6 +157,21 @@ class ClockControlTest {
         wallSeconds(0.1);
         s.runUntilIdle();
         assertEquals(Arrays.asList("a@0.5", "b@3.0", "c@3.5"), log);
+    }
+
+    @Test
+    void aRunStartedAtMaxCanBeSlowedDownFromWhereItIs() {
+        Scheduler s = lockstep();
+        s.schedule(2.0, Scheduler.NORMAL, record("a"));
+        s.schedule(2.5, Scheduler.NORMAL, record("b"));
+        assertTrue(s.runNext());
+        wallSeconds(50.0);
+        s.setSpeed(1.0);
+        assertEquals(2.0, s.now(), 1e-12);
+        assertFalse(s.runNext());
+        wallSeconds(0.5);
+        assertTrue(s.runNext());
+        assertEquals(Arrays.asList("a@2.0", "b@2.5"), log);
     }
 
     @Test
