@@ -1,5 +1,6 @@
 package rp1.view;
 
+import java.awt.GraphicsEnvironment;
 import java.awt.Toolkit;
 import java.awt.event.KeyEvent;
 import java.util.function.Consumer;
@@ -105,7 +106,8 @@ final class Menus {
     /** A menu item running {@code action}, with the platform's shortcut modifier and {@code key} (0: none). */
     private static JMenuItem item(String text, int key, Runnable action) {
         JMenuItem item = new JMenuItem(text);
-        if (key != 0) {
+        // Without a display there are no shortcuts to take (the toolkit refuses to name the modifier).
+        if (key != 0 && !GraphicsEnvironment.isHeadless()) {
             item.setAccelerator(KeyStroke.getKeyStroke(key, Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx()));
         }
         item.addActionListener(e -> action.run());
