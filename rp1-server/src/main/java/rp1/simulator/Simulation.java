@@ -233,7 +233,7 @@ public final class Simulation {
         if (waitingFor > 0 && placed >= waitingFor) {
             waitingFor = 0;
         }
-        boolean hold = waitingFor > 0 || (settings.isLockstep() && placed == 0);
+        boolean hold = waitingFor > 0 || (scheduler.isLockstep() && placed == 0);
         if (hold) {
             scheduler.hold();
         } else {
@@ -279,6 +279,48 @@ public final class Simulation {
      */
     public void mouseClick(int button, int clickCount, double x, double y) {
         inputs.submit(new ViewInput(new ViewAction.MouseClick(button, clickCount, x, y), this));
+    }
+
+    /**
+     * Pauses the run (the view's "Pause"): simulated time stands still between two tasks until
+     * {@link #resume()}. Like the other clock controls, it changes when things happen on the wall
+     * clock, never what happens at which simulated time.
+     */
+    public void pause() {
+        scheduler.pause();
+    }
+
+    /** Ends a {@link #pause()}: time runs on from where it stood. */
+    public void resume() {
+        scheduler.unpause();
+    }
+
+    /** Whether the run is paused. */
+    public boolean isPaused() {
+        return scheduler.isPaused();
+    }
+
+    /** Simulated seconds per wall second now; infinity when as fast as possible. */
+    public double getSpeed() {
+        return scheduler.getSpeed();
+    }
+
+    /** Lets one modelling interval of simulated time pass (pausing first if the run goes on), then stands still. */
+    public void stepOneInterval() {
+        scheduler.step(settings.modelingInterval);
+    }
+
+    /**
+     * From now on, {@code speed} simulated seconds per wall second, or as fast as possible for
+     * infinity (as {@code simulationSpeed=max}, except that the run keeps its server's other settings).
+     * A replay always runs as fast as possible.
+     *
+     * @throws IllegalArgumentException if the speed is not positive
+     */
+    public void setSpeed(double speed) {
+        scheduler.setSpeed(speed);
+        // A lockstep clock is held while no robot is on the floor; decide that anew on the task thread.
+        scheduler.observeNow(t -> placedRobotsChanged(placedRobots));
     }
 
     /** Clears every paint trail (the view's "Remove Paint Trails"). */

@@ -61,7 +61,7 @@ final class SimulatorWindow {
                 exitOnItsThread.run();
             }
         });
-        frame.setJMenuBar(Menus.build(units, status::setUnits, canvas, simulation::removePaintTrails, exitOnItsThread));
+        frame.setJMenuBar(Menus.build(units, status::setUnits, canvas, simulation, exitOnItsThread));
         frame.getContentPane().setBackground(Color.lightGray);
         frame.getContentPane().add(canvas, BorderLayout.CENTER);
         frame.getContentPane().add(status, BorderLayout.SOUTH);

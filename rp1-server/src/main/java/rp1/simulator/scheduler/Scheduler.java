@@ -311,6 +311,85 @@ public final class Scheduler {
         }
     }
 
+    /**
+     * The user paused the run: simulated time stops where it is now, between two tasks. Inputs are
+     * still applied (at that time), as at any boundary; what waits until nothing else can run
+     * ({@link #whenIdle}) waits for the run to go on, so it happens at the same point of the run.
+     */
+    public void pause() {
+        lock.lock();
+        try {
+            clock.pause(horizon());
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Ends a {@link #pause()}: time runs on from where it stood. */
+    public void unpause() {
+        lock.lock();
+        try {
+            clock.unpause();
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Lets {@code seconds} more of simulated time pass (pausing first if the run goes on), then stands still. */
+    public void step(double seconds) {
+        lock.lock();
+        try {
+            clock.step(horizon(), seconds);
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Whether the user has paused the run. */
+    public boolean isPaused() {
+        lock.lock();
+        try {
+            return clock.isPaused();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * From now on, {@code speed} simulated seconds per wall second, or lockstep for infinity
+     * ({@code simulationSpeed=max}); time runs on from where it is. A replay stays lockstep.
+     */
+    public void setSpeed(double speed) {
+        lock.lock();
+        try {
+            clock.setSpeed(horizon(), speed);
+            signalIfIdle();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Simulated seconds per wall second now; infinity in lockstep. */
+    public double getSpeed() {
+        lock.lock();
+        try {
+            return clock.getSpeed();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Whether the clock is lockstep now (the speed is max, or a replay). */
+    public boolean isLockstep() {
+        lock.lock();
+        try {
+            return clock.isLockstep();
+        } finally {
+            lock.unlock();
+        }
+    }
 
     // ---------------------------------------------------------------------------------------------
     // Running.
@@ -522,7 +601,7 @@ public final class Scheduler {
             } else {
                 e = clock.isBegun() ? takeDue() : null;
                 if (e == null) {
-                    idle = idleActions.pollFirst();
+                    idle = clock.isPaused() ? null : idleActions.pollFirst();
                     if (idle == null) {
                         return Step.NONE;
                     }
@@ -556,7 +635,7 @@ public final class Scheduler {
         if (shutDown || clock.isStopped()) {
             return false;
         }
-        if ((inputsPending && boundary != null) || !idleActions.isEmpty()) {
+        if ((inputsPending && boundary != null) || (!idleActions.isEmpty() && !clock.isPaused())) {
             return true;
         }
         if (!clock.isBegun()) {
@@ -571,10 +650,10 @@ public final class Scheduler {
 
     /**
      * Whether a timed task may run now: a paced clock has reached its time, or a lockstep clock that
-     * is not held may jump there. Holds the lock.
+     * is not held (nor paused before that time) may jump there. Holds the lock.
      */
     private boolean isDue(Entry head) {
-        return head.time <= clock.update(head.time) || (clock.isLockstep() && !clock.isHeld());
+        return head.time <= clock.update(head.time) || clock.mayJumpTo(head.time);
     }
 
     /**
@@ -615,7 +694,7 @@ public final class Scheduler {
             return IDLE_RECHECK_NANOS;
         }
         Entry head = peekTimed();
-        if (head == null) {
+        if (head == null || head.time > clock.limit()) {
             return IDLE_RECHECK_NANOS;
         }
         return Math.max(1L, Math.min(IDLE_RECHECK_NANOS, clock.nanosUntil(head.time)));

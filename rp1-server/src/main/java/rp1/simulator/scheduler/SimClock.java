@@ -16,22 +16,32 @@ package rp1.simulator.scheduler;
  * in the recorded run is already in that sequence, so a hold of the replay's own would only stall it.</li>
  * </ul>
  *
- * <p>Three ways to hold time back: before {@link #begin()} nothing runs; while {@link #stop(double) stopped}
+ * <p>Four ways to hold time back: before {@link #begin()} nothing runs; while {@link #stop(double) stopped}
  * (the interlock waits for a client) nothing runs and time is frozen; while {@link #hold() held}
  * (waiting for clients to place their robots) time cannot advance, but work due at the current time
- * still runs. Not thread-safe on its own: the {@link Scheduler} guards it.
+ * still runs; while {@link #pause(double) paused} (the user, in the window) time cannot pass a limit,
+ * the time it was paused at plus whatever {@link #step(double, double) steps} allowed since. Each
+ * has its own flag, so the clock runs only when none of them holds it.
+ *
+ * <p>The user may also change the speed while the run goes on ({@link #setSpeed(double, double)}),
+ * paced to lockstep and back. All of this changes only how fast simulated time passes against the
+ * wall clock, never which tasks run at which simulated time. Not thread-safe on its own: the
+ * {@link Scheduler} guards it.
  */
 public final class SimClock {
     /** How far, in wall seconds, a paced clock may fall behind its deadlines before it gives up catching up. */
     public static final double MAX_LAG_SECONDS = 1.0;
 
     private final TimeSource wall;
-    private final double speed;
-    private final boolean lockstep;
+    private double speed;
+    private boolean lockstep;
     private final boolean holdable;
     private boolean begun;
     private boolean stopped;
     private boolean held;
+    private boolean paused;
+    /** While paused, the time the clock may not pass; infinity otherwise. */
+    private double limit = Double.POSITIVE_INFINITY;
     private double simTime;
     private long wallAnchor;
     private double simAnchor;
@@ -57,7 +67,12 @@ public final class SimClock {
 
     /** A clock that never reads the wall clock: time is the time of the task being run. */
     public static SimClock lockstep() {
-        return new SimClock(null, Double.POSITIVE_INFINITY, true, true);
+        return lockstep(TimeSource.SYSTEM);
+    }
+
+    /** A lockstep clock that reads {@code wall} only if it is {@link #setSpeed(double, double) slowed down}. */
+    public static SimClock lockstep(TimeSource wall) {
+        return new SimClock(wall, Double.POSITIVE_INFINITY, true, true);
     }
 
     /** A lockstep clock on which {@link #hold()} has no effect, for replaying a recorded run. */
@@ -119,6 +134,69 @@ public final class SimClock {
         held = holdable;
     }
 
+    /** Freezes time after bringing it up to date (limited by {@code horizon}) until {@link #unpause()}. */
+    void pause(double horizon) {
+        if (!paused) {
+            update(horizon);
+            paused = true;
+            limit = simTime;
+        }
+    }
+
+    /** Ends a {@link #pause(double)}: time runs on from here, deadlines counting from now. */
+    void unpause() {
+        if (paused) {
+            paused = false;
+            limit = Double.POSITIVE_INFINITY;
+            anchor();
+        }
+    }
+
+    /**
+     * Lets a paused clock (pausing it first if it runs) advance {@code seconds} more, at its speed
+     * from now, and then stand still again.
+     */
+    void step(double horizon, double seconds) {
+        pause(horizon);
+        update(horizon);
+        limit += seconds;
+        anchor();
+    }
+
+    boolean isPaused() {
+        return paused;
+    }
+
+    /** The time a paused clock may not pass (infinity when not paused). */
+    double limit() {
+        return limit;
+    }
+
+    /**
+     * Changes the speed: {@code newSpeed} simulated seconds per wall second, or lockstep for infinity.
+     * Time is brought up to date (limited by {@code horizon}) first and the deadlines count from there,
+     * so time never goes back. A replay clock stays lockstep.
+     *
+     * @throws IllegalArgumentException if the speed is not positive
+     */
+    void setSpeed(double horizon, double newSpeed) {
+        if (!(newSpeed > 0.0)) {
+            throw new IllegalArgumentException("simulation speed must be positive, got " + newSpeed);
+        }
+        if (!holdable) {
+            return;
+        }
+        update(horizon);
+        speed = newSpeed;
+        lockstep = Double.isInfinite(newSpeed);
+        anchor();
+    }
+
+    /** The speed: simulated seconds per wall second, infinity in lockstep. */
+    public double getSpeed() {
+        return speed;
+    }
+
     /** Ends a {@link #hold()}: time runs on from here, deadlines counting from now. */
     void release() {
         if (held) {
@@ -131,7 +209,7 @@ public final class SimClock {
      * Advances simulation time to what the deadlines say, but never past {@code horizon} (the time of
      * the first queued timed task); returns the updated time. Time never goes back: a horizon in the
      * past (a negative timeout waiting to run) or not a number leaves it where it is. Lockstep, stopped,
-     * held and not yet begun clocks do not move.
+     * held and not yet begun clocks do not move; a paused one not past its limit.
      */
     double update(double horizon) {
         if (!lockstep && begun && !stopped && !held) {
@@ -141,7 +219,7 @@ public final class SimClock {
                 simAnchor -= estimate - simTime - maxLag;
                 estimate = simTime + maxLag;
             }
-            double reached = Math.min(estimate, horizon);
+            double reached = Math.min(Math.min(estimate, horizon), limit);
             if (reached > simTime) {
                 simTime = reached;
             }
@@ -162,6 +240,11 @@ public final class SimClock {
     /** Sets the time the task about to run is stamped with (lockstep). */
     void setSimTime(double t) {
         simTime = t;
+    }
+
+    /** Whether a lockstep clock may jump to {@code time}: not held, and not past a pause's limit. */
+    boolean mayJumpTo(double time) {
+        return lockstep && !held && time <= limit;
     }
 
     /** Wall nanoseconds until the deadline of simulation time {@code target} (paced clocks only). */

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -16,6 +17,7 @@ import rp1.rossum.event.RsPlacementEvent;
 import rp1.rossum.event.RsRangeSensorEvent;
 import rp1.rossum.event.RsTimeoutEvent;
 import rp1.rossum.request.RsMotionRequest;
+import rp1.simulator.Simulation;
 import rp1.simulator.SimulationSettings;
 
 /**
@@ -71,6 +73,50 @@ class DeterminismTest {
         }
         assertTrue(first.split("\n").length > 40, "a long scenario:\n" + first);
         assertEquals(first, second);
+    }
+
+    @Test
+    void pausingAndSteppingPartOfTheWayGiveTheSameEventStream() throws Exception {
+        String plain;
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            plain = wander(s);
+        }
+        String controlled;
+        try (Scenario s = Scenario.lockstep(Plans.HALL)) {
+            Simulation sim = s.simulation();
+            sim.pause();
+            AtomicReference<String> transcript = new AtomicReference<>();
+            AtomicReference<Throwable> failure = new AtomicReference<>();
+            Thread run = new Thread(() -> {
+                try {
+                    transcript.set(wander(s));
+                } catch (Throwable t) {
+                    failure.set(t);
+                }
+            }, "wander");
+            run.start();
+            for (int i = 1; i <= 20; i++) {
+                sim.stepOneInterval();
+                Thread.sleep(2);
+                assertTrue(sim.getSimTime() <= i * 0.05 + 1e-9, "step " + i + " went past its interval: " + sim.getSimTime());
+            }
+            sim.resume();
+            for (int i = 0; i < 10 && run.isAlive(); i++) {
+                sim.pause();
+                Thread.sleep(3);
+                sim.stepOneInterval();
+                sim.stepOneInterval();
+                Thread.sleep(1);
+                sim.resume();
+                Thread.sleep(3);
+            }
+            run.join(60_000);
+            if (failure.get() != null) {
+                throw new AssertionError(failure.get());
+            }
+            controlled = transcript.get();
+        }
+        assertEquals(plain, controlled);
     }
 
     @Test
