@@ -21,8 +21,7 @@ public class DemoMain extends ClnMain {
 
     /**
      * Connects to a simulator on the network and runs until it goes away.
-     *
-     * @throws IOException if the simulator cannot be reached
+     * If it cannot be reached, says so in one line and exits with status 1.
      */
     public static void main(String[] args) {
         Standalone.run(new DemoMain());
