@@ -421,7 +421,7 @@ public final class Batch {
 
     /**
      * The user's properties with the run's own keys after them (later keys win): its configuration,
-     * a {@code --client}'s keys, its seed and plan, no window, and its log, recording, event log and
+     * a {@code --client}'s keys, its seed and plan, no window and no live view, and its log, recording, event log and
      * (with {@code --pictures}) picture in its folder; without, none, since drawing and encoding it
      * would cost a bumper run three times what the run itself costs (a replay draws one when asked).
      */
@@ -439,6 +439,8 @@ public final class Batch {
                 + "randomSeed=" + run.seed() + "\n"
                 + "floorPlanFileName=" + run.plan() + "\n"
                 + "enableGUI=false\n"
+                // Runs go side by side: a live view on one port would let only the first of them start.
+                + "viewPort=0\n"
                 + "logToFile=true\n"
                 + "logFileName=" + d.resolve(SweepRun.LOG) + "\n"
                 + "logToSystemOut=false\n"

@@ -18,7 +18,8 @@ import java.util.Properties;
  * the simulated time it stopped at, why, the server's exit status, and every robot's results.
  *
  * @param endTime    simulated seconds at the end (NaN if the run never started)
- * @param endReason  {@code max-simulation-time}, {@code clients-done}, or what went wrong
+ * @param endReason  {@code max-simulation-time}, {@code clients-done}, {@code nobody-left} (every robot
+ *                   and client left), {@code stopped}, or what went wrong
  * @param exitStatus the server's exit status (docs/guide.md section 4), or the process's
  */
 public record RunReport(double endTime, String endReason, int exitStatus, List<RobotResult> robots) {

@@ -21,7 +21,7 @@ public record Varied(String key, List<String> values) {
     private static final List<String[]> OWN_KEYS = List.of(new String[] {"randomSeed", "--seeds"},
             new String[] {"floorPlanFileName", "--plans"}, new String[] {"recordFileName", null},
             new String[] {"eventLogFileName", null}, new String[] {"snapshotFileName", null},
-            new String[] {"logFileName", null}, new String[] {"enableGUI", null});
+            new String[] {"logFileName", null}, new String[] {"enableGUI", null}, new String[] {"viewPort", null});
 
     /** Copies the list. */
     public Varied {

@@ -21,6 +21,8 @@ class VariedTest {
     void keysTheSweepSetsItselfAndBadRangesAreRefusedSayingWhy() {
         assertEquals("--vary randomSeed: the sweep sets randomSeed for each run itself; use --seeds",
                 assertThrows(IllegalArgumentException.class, () -> Varied.parse("randomSeed=1,2")).getMessage());
+        assertEquals("--vary viewPort: the sweep sets viewPort for each run itself",
+                assertThrows(IllegalArgumentException.class, () -> Varied.parse("viewPort=8080,8081")).getMessage());
         assertEquals("--vary x=3:1:1: a range needs FROM <= TO and a positive STEP",
                 assertThrows(IllegalArgumentException.class, () -> Varied.parse("x=3:1:1")).getMessage());
         assertEquals("--vary x=1:a:1: \"a\" is not a number",
