@@ -59,28 +59,7 @@ final class ProcessRun implements LocalRun {
         } catch (IOException e) {
             trails = List.of();
         }
-        try {
-            return new RunEngine.Ran(RunReport.read(dir), trails);
-        } catch (IOException e) {
-            // Said as the sweep's own engine says it, so that the row is the same on every engine.
-            return new RunEngine.Ran(RunReport.failed("the run ended with status " + p.exitValue() + " and no results: "
-                    + lastLine(dir.resolve(OUTPUT)), p.exitValue()), trails);
-        }
-    }
-
-    /** The last thing the run's process printed. */
-    private static String lastLine(Path output) {
-        try {
-            List<String> lines = Files.readAllLines(output, StandardCharsets.UTF_8);
-            for (int i = lines.size() - 1; i >= 0; i--) {
-                if (!lines.get(i).isBlank()) {
-                    return lines.get(i).trim();
-                }
-            }
-            return "it printed nothing";
-        } catch (IOException e) {
-            return "no output (" + e.getMessage() + ")";
-        }
+        return new RunEngine.Ran(RunReport.ofProcess(dir, dir.resolve(OUTPUT), p.exitValue()), trails);
     }
 
     private static void stop(Process p) throws InterruptedException {

@@ -66,7 +66,7 @@ final class ExternalClient {
     /** How the program ended, with the last line it printed, for a run's reason. */
     String describeExit() {
         return "the program ended with status " + process.exitValue() + " before the run did: "
-                + ProcessRuns.lastLine(output);
+                + RunReport.lastLine(output);
     }
 
     /**

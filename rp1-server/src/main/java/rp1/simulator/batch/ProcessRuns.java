@@ -121,26 +121,6 @@ final class ProcessRuns implements RunEngine {
     }
 
     private static RunReport report(Path dir, int status) {
-        try {
-            return RunReport.read(dir);
-        } catch (IOException e) {
-            return RunReport.failed("the run ended with status " + status + " and no results: "
-                    + lastLine(dir.resolve(OUTPUT)), status);
-        }
-    }
-
-    /** The last line a process printed into {@code file}, or what there is instead. */
-    static String lastLine(Path file) {
-        try {
-            List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
-            for (int i = lines.size() - 1; i >= 0; i--) {
-                if (!lines.get(i).isBlank()) {
-                    return lines.get(i).trim();
-                }
-            }
-            return "it printed nothing";
-        } catch (IOException e) {
-            return "no output (" + e.getMessage() + ")";
-        }
+        return RunReport.ofProcess(dir, dir.resolve(OUTPUT), status);
     }
 }

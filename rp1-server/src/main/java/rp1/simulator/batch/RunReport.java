@@ -38,6 +38,34 @@ public record RunReport(double endTime, String endReason, int exitStatus, List<R
         return new RunReport(Double.NaN, reason, exitStatus, List.of());
     }
 
+    /**
+     * The report a run's process left in {@code dir}; if it left none, a failure with its exit status
+     * and the last line it printed into {@code output}. Every engine says it this way, so that the
+     * row is the same wherever the run ran.
+     */
+    public static RunReport ofProcess(Path dir, Path output, int status) {
+        try {
+            return read(dir);
+        } catch (IOException e) {
+            return failed("the run ended with status " + status + " and no results: " + lastLine(output), status);
+        }
+    }
+
+    /** The last line a process printed into {@code file}, or what there is instead. */
+    public static String lastLine(Path file) {
+        try {
+            List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+            for (int i = lines.size() - 1; i >= 0; i--) {
+                if (!lines.get(i).isBlank()) {
+                    return lines.get(i).trim();
+                }
+            }
+            return "it printed nothing";
+        } catch (IOException e) {
+            return "no output (" + e.getMessage() + ")";
+        }
+    }
+
     /** Whether the run ended as its properties meant it to: status 0. */
     public boolean succeeded() {
         return exitStatus == 0;
