@@ -51,17 +51,7 @@ public final class Sweep {
      * cleanly and keeps the finished ones ({@link Interruption}).
      */
     public static void main(String[] args) {
-        Interruption interruption = new Interruption();
-        Runtime.getRuntime().addShutdownHook(new Thread(interruption::signalled, "stop the runs"));
-        int status = 1;
-        try {
-            status = run(args, System.out, System.err, System.console() != null, interruption);
-        } catch (RuntimeException e) {
-            // A defect, not a signal: leave at once rather than let the hook wait for a sweep that is gone.
-            System.err.println("rp1.Sweep: internal error: " + e);
-        } finally {
-            interruption.exit(status);
-        }
+        Interruption.runAndExit("rp1.Sweep", i -> run(args, System.out, System.err, System.console() != null, i));
     }
 
     /** {@link #run(String[], PrintStream, PrintStream, boolean, Interruption)}, never interrupted. */

@@ -44,16 +44,7 @@ public final class SparkSweep {
 
     /** Runs the sweep; the process exits with its status. */
     public static void main(String[] args) {
-        Interruption interruption = new Interruption();
-        Runtime.getRuntime().addShutdownHook(new Thread(interruption::signalled, "stop the runs"));
-        int status = 1;
-        try {
-            status = run(args, System.out, System.err, System.console() != null, interruption);
-        } catch (RuntimeException e) {
-            System.err.println("rp1.Sweep: internal error: " + e);
-        } finally {
-            interruption.exit(status);
-        }
+        Interruption.runAndExit("rp1.Sweep", i -> run(args, System.out, System.err, System.console() != null, i));
     }
 
     /**

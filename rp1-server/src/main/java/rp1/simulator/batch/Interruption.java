@@ -21,6 +21,32 @@ public final class Interruption {
     private Runnable onStop = () -> { };
     private volatile int status = STATUS;
 
+    /** A sweep's work, given the interruption that may stop it; answers the exit status. */
+    @FunctionalInterface
+    public interface Sweeping {
+        int run(Interruption interruption);
+    }
+
+    /**
+     * A sweep's {@code main}: runs it with Ctrl-C and SIGTERM turned into an orderly stop, then ends
+     * the process with its status (1 if it failed with a defect).
+     *
+     * @param name  the command, for the message about a defect
+     */
+    public static void runAndExit(String name, Sweeping sweep) {
+        Interruption interruption = new Interruption();
+        Runtime.getRuntime().addShutdownHook(new Thread(interruption::signalled, "stop the runs"));
+        int status = 1;
+        try {
+            status = sweep.run(interruption);
+        } catch (RuntimeException e) {
+            // A defect, not a signal: leave at once rather than let the hook wait for a sweep that is gone.
+            System.err.println(name + ": internal error: " + e);
+        } finally {
+            interruption.exit(status);
+        }
+    }
+
     /** Whether the sweep was asked to stop. */
     public synchronized boolean requested() {
         return requested;
