@@ -50,6 +50,7 @@ final class SimulatorWindow {
         publisher = new SnapshotPublisher(simulation);
         DisplayUnits units = DisplayUnits.of(plan.getUnits());
         status = new StatusPanel(units);
+        status.showPausedBy(simulation::isPaused);
         canvas = new PlanCanvas(new Renderer(plan), publisher.poll(), simulation, status::showPointer);
         animation = new Animation(publisher, simulation::getSimTime, canvas, status);
         animation.frame();

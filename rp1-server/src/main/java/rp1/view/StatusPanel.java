@@ -5,6 +5,7 @@ import java.awt.FlowLayout;
 import java.awt.FontMetrics;
 import java.awt.Insets;
 import java.util.List;
+import java.util.function.BooleanSupplier;
 
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
@@ -33,6 +34,8 @@ final class StatusPanel extends JPanel {
     private transient RsUnits units;
     private transient WorldSnapshot shown;
     private double shownTime;
+    /** Whether the run is paused now (the Run menu), said after the time. */
+    private transient BooleanSupplier paused = () -> false;
     private transient RsPoint pointer;
 
     StatusPanel(DisplayUnits initial) {
@@ -63,11 +66,16 @@ final class StatusPanel extends JPanel {
         refresh();
     }
 
+    /** Where the status line learns whether the run is paused. */
+    void showPausedBy(BooleanSupplier source) {
+        paused = source;
+    }
+
     /** Shows the simulation time {@code simTime} and the robots' poses in {@code s}. */
     void showState(WorldSnapshot s, double simTime) {
         shown = s;
         shownTime = simTime;
-        state.setText(StatusText.describe(simTime, s.robots(), units));
+        state.setText(StatusText.describe(simTime, paused.getAsBoolean(), s.robots(), units));
     }
 
     /** The width, in pixels, the status line needs to show the widest of {@code lines} in full. */

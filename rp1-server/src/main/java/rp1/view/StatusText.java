@@ -25,7 +25,15 @@ final class StatusText {
      * clock's, not the snapshot's: it moves on while the robots stand still and no snapshot is taken.
      */
     static String describe(double simTime, List<RobotSnapshot> robots, RsUnits units) {
+        return describe(simTime, false, robots, units);
+    }
+
+    /** As {@link #describe(double, List, RsUnits)}, saying after the time that the run is paused (Run menu). */
+    static String describe(double simTime, boolean paused, List<RobotSnapshot> robots, RsUnits units) {
         StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "t = %.3f s", simTime));
+        if (paused) {
+            b.append(" (paused)");
+        }
         for (RobotSnapshot r : robots) {
             b.append("   ").append(r.label()).append(": ");
             if (r.placed()) {
@@ -43,7 +51,7 @@ final class StatusText {
     /**
      * Candidates for the widest status line a shipped demo shows on {@code plan}: one robot with the
      * longest demo name at each corner of the plan (the coordinates with the most digits and signs),
-     * heading 359.9 degrees, at {@link #SAMPLE_TIME}. Which is widest depends on the font; the
+     * heading 359.9 degrees, at {@link #SAMPLE_TIME}, paused. Which is widest depends on the font; the
      * window's default width is made to fit them all.
      */
     static List<String> samples(RsPlan plan, RsUnits units) {
@@ -53,7 +61,7 @@ final class StatusText {
         for (double x : new double[] {b.x, b.x + b.width}) {
             for (double y : new double[] {b.y, b.y + b.height}) {
                 RobotSnapshot robot = new RobotSnapshot(1, SAMPLE_ROBOT_NAME, true, x, y, heading, List.of());
-                lines.add(describe(SAMPLE_TIME, List.of(robot), units));
+                lines.add(describe(SAMPLE_TIME, true, List.of(robot), units));
             }
         }
         return lines;
