@@ -75,13 +75,13 @@ class DirectDeliveryTest {
         RunningServer server = TestServer.start(dir, "dlcEnabled=true", CLIENT, "simulationSpeed=20",
                 "enableNetworkClients=false");
         try {
-            await(() -> DirectDlc.latest != null && DirectDlc.latest.beatThreads.size() >= 2, Duration.ofSeconds(10),
+            await(() -> DirectDlc.latest != null && DirectDlc.latest.beatThreads.size() >= 2, Duration.ofSeconds(30),
                     "the loaded client received two heartbeats");
             DirectDlc c = DirectDlc.latest;
             for (int i = 0; i < 100; i++) {
                 c.sendPositionRequest();
             }
-            await(() -> c.positions.size() >= 100, Duration.ofSeconds(10), "every request sent from this thread was answered");
+            await(() -> c.positions.size() >= 100, Duration.ofSeconds(30), "every request sent from this thread was answered");
             assertEquals(100, c.positions.size(), "every request sent from this thread was answered once");
             assertEquals(TestServer.placementX(1), c.positions.get(99).x, 1e-9);
         } finally {
