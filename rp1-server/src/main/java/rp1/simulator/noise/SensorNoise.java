@@ -65,10 +65,10 @@ final class SensorNoise {
         if (!t.status) {
             return t;
         }
-        if (e.lost) {
+        if (e.lost()) {
             return new RsRangeSensorEvent(t.simTime, t.sensorID, t.x, t.y, t.ux, t.uy, false, 0.0, "");
         }
-        double r = Math.max(0.0, Math.min(maxRange, t.range + e.range));
+        double r = Math.max(0.0, Math.min(maxRange, t.range + e.range()));
         return new RsRangeSensorEvent(t.simTime, t.sensorID, t.x, t.y, t.ux, t.uy, true, r,
                 t.getNameOfObjectDetected());
     }
@@ -78,22 +78,13 @@ final class SensorNoise {
         if (!t.status) {
             return t;
         }
-        double r = Math.max(0.0, t.range + e.range);
-        double b = Math.IEEEremainder(t.bearing + e.bearing, 2.0 * Math.PI);
+        double r = Math.max(0.0, t.range + e.range());
+        double b = Math.IEEEremainder(t.bearing + e.bearing(), 2.0 * Math.PI);
         return new RsTargetSensorEvent(t.simTime, t.sensorID, t.x, t.y, t.ux, t.uy, true, r * Math.cos(b),
                 r * Math.sin(b), r, b, t.getNameOfObjectDetected());
     }
 
     /** The error of one reading: added to the range and bearing, or the reading lost. */
-    private static final class Error {
-        final double range;
-        final double bearing;
-        final boolean lost;
-
-        Error(double range, double bearing, boolean lost) {
-            this.range = range;
-            this.bearing = bearing;
-            this.lost = lost;
-        }
+    private record Error(double range, double bearing, boolean lost) {
     }
 }

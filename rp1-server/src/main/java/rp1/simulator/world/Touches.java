@@ -52,38 +52,29 @@ final class Touches {
         for (RsBodySensor s : r.getBody().getBodySensorArray()) {
             Touch first = null;
             for (Touch t : touched) {
-                if (t.sensor == s && t.time <= time && (first == null || t.time < first.time)) {
+                if (t.sensor() == s && t.time() <= time && (first == null || t.time() < first.time())) {
                     first = t;
                 }
             }
             if (first != null && !s.getHot()) {
-                RsBodyContactSensor c = first.sensor;
-                c.setCollision(true, first.by);
+                RsBodyContactSensor c = first.sensor();
+                c.setCollision(true, first.by());
                 c.setHot(true);
                 r.events().sendIfSubscribed(c.getStateChangeEvent(time));
             }
         }
-        touched.removeIf(t -> t.time <= time);
+        touched.removeIf(t -> t.time() <= time);
         if (touched.isEmpty()) {
             return Double.NaN;
         }
         double next = Double.POSITIVE_INFINITY;
         for (Touch t : touched) {
-            next = Math.min(next, t.time);
+            next = Math.min(next, t.time());
         }
         return next;
     }
 
     /** A contact sensor another robot ran into, pressed with its name at the time it stops. */
-    private static final class Touch {
-        final RsBodyContactSensor sensor;
-        final String by;
-        final double time;
-
-        Touch(RsBodyContactSensor sensor, String by, double time) {
-            this.sensor = sensor;
-            this.by = by;
-            this.time = time;
-        }
+    private record Touch(RsBodyContactSensor sensor, String by, double time) {
     }
 }
