@@ -1,5 +1,8 @@
 package rp1.simulator.noise;
 
+import static rp1.rossum.wire.MotionLimits.NULL_LIMIT;
+import static rp1.rossum.wire.MotionLimits.STRAIGHT_LIMIT;
+
 import rp1.rossum.request.RsMotionRequest;
 
 /**
@@ -9,11 +12,6 @@ import rp1.rossum.request.RsMotionRequest;
  * |v / omega| to the side of omega's sign, the heading turning by omega (negated when backing).
  */
 final class Odometry {
-    /** As the simulator's: durations, speeds and turn rates below this make a null motion. */
-    private static final double NULL_LIMIT = 1.0e-4;
-    /** As the simulator's: turn rates below 0.1 degree per second make a straight line. */
-    private static final double STRAIGHT_LIMIT = 0.1 * Math.PI / 180.0;
-
     private Odometry() {
     }
 
