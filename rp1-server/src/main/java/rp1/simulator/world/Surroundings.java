@@ -126,7 +126,7 @@ final class Surroundings {
         double x1 = p.m13 + reach;
         double y1 = p.m23 + reach;
         RsWall[] nearWalls = walls.near(x0, y0, x1, y1);
-        if (!robotsInteract || onFloor < 2) {
+        if (!robotsCanMeet()) {
             return nearWalls;
         }
         List<RsWall[]> seen = new ArrayList<>();
