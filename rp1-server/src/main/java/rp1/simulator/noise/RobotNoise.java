@@ -31,11 +31,6 @@ public final class RobotNoise {
         this.motion = motion;
     }
 
-    /** Whether anything about this robot is noisy. */
-    public boolean isNoisy() {
-        return sensors != null || encoders != null || motion != null;
-    }
-
     /**
      * The reading of {@code sensor} at {@code time} that its client gets. {@code changed}: the sensor's
      * true reading has just changed (an event is due), so a new error is drawn; else the last one holds.
