@@ -148,7 +148,7 @@ public final class Batch {
             List<Run> runs = runs(configurations, options.seeds, plans.keySet(), out.resolve("runs"));
             List<Outcome> kept = options.resume ? kept(out, spec, runs, options) : List.of();
             RunEngine engine = options.isolation == SweepOptions.Isolation.PROCESS
-                    ? new ProcessRuns(options.timeoutSeconds, classPath)
+                    ? RunEngine.inProcesses(options.timeoutSeconds, classPath)
                     : new LoaderRuns(new ArrayList<>(robotClasses), ClientClassPath.loader(classPath, loader),
                             options.timeoutSeconds);
             return new Batch(options, out, found.text, plans, runs, spec, kept, classPath, engine);

@@ -1,6 +1,7 @@
 package rp1.simulator.batch;
 
 import java.io.IOException;
+import java.nio.file.Path;
 import java.util.List;
 
 /**
@@ -32,6 +33,17 @@ public interface RunEngine {
      */
     static RunEngine inThisProcess(List<String> robotClasses, ClassLoader parent, double timeoutSeconds) {
         return new LoaderRuns(robotClasses, parent, timeoutSeconds);
+    }
+
+    /**
+     * The sweep's engine for runs in processes of their own ({@code --isolation process}): {@link
+     * SweepRun} with the quick compiler, stopped as Ctrl-C would stop it after the timeout. rp1-spark's
+     * executors run such tasks with it.
+     *
+     * @param robotClassPath the robots' classes ({@code -cp}), absolute
+     */
+    static RunEngine inProcesses(double timeoutSeconds, List<Path> robotClassPath) {
+        return new ProcessRuns(timeoutSeconds, robotClassPath);
     }
 
     /** Makes the engine for a sweep once the sweep is prepared (its runs and robot class path known). */
