@@ -104,14 +104,11 @@ public final class ServerConfig {
     public final double connectTimeout;
     /** Events that may wait for a slow client before it is disconnected. */
     public final int clientQueueLimit;
-    /** Bytes of events that may wait for a slow client before it is disconnected. */
-    public final int clientOutputBudget;
-    /** Bytes a client's pending timeouts may count (256 each) before it is disconnected. */
-    public final int clientTimeoutBudget;
-    /** Bytes a client's subscriptions may count (128 each) before it is disconnected. */
-    public final int clientSubscriptionBudget;
-    /** Bytes of a client's message that has begun to arrive, beyond which it is disconnected. */
-    public final int clientMessageBudget;
+    /**
+     * What one client may make the server hold, in bytes ({@code clientOutputBudget},
+     * {@code clientTimeoutBudget}, {@code clientSubscriptionBudget}, {@code clientMessageBudget}).
+     */
+    public final ClientBudgets clientBudgets;
     /** Where to write pictures of the world, or null. */
     public final String snapshotFileName;
     /** Simulated seconds between pictures (0: only at exit). */
@@ -182,11 +179,11 @@ public final class ServerConfig {
         connectTimeout = r.real("connectTimeout", 10.0, 0.001, 86400.0);
         clientQueueLimit = r.integer("clientQueueLimit", 10000, 16, Integer.MAX_VALUE);
         ClientBudgets budgets = ClientBudgets.DEFAULTS;
-        clientOutputBudget = r.integer("clientOutputBudget", budgets.output, 64 << 10, Integer.MAX_VALUE);
-        clientTimeoutBudget = r.integer("clientTimeoutBudget", budgets.timeouts, 4 << 10, Integer.MAX_VALUE);
-        clientSubscriptionBudget = r.integer("clientSubscriptionBudget", budgets.subscriptions, 4 << 10,
-                Integer.MAX_VALUE);
-        clientMessageBudget = r.integer("clientMessageBudget", budgets.message, 64 << 10, budgets.message);
+        clientBudgets = new ClientBudgets(
+                r.integer("clientOutputBudget", budgets.output, 64 << 10, Integer.MAX_VALUE),
+                r.integer("clientTimeoutBudget", budgets.timeouts, 4 << 10, Integer.MAX_VALUE),
+                r.integer("clientSubscriptionBudget", budgets.subscriptions, 4 << 10, Integer.MAX_VALUE),
+                r.integer("clientMessageBudget", budgets.message, 64 << 10, budgets.message));
         snapshotFileName = r.string("snapshotFileName");
         snapshotInterval = r.real("snapshotInterval", 0.0, 0.0, Double.POSITIVE_INFINITY);
         robotsInteract = r.bool(true, "robotsInteract");
@@ -236,11 +233,6 @@ public final class ServerConfig {
                 Math.toRadians(r.real("noiseTargetBearingSigma", 0.0, 0.0, 360.0)),
                 r.real("noiseEncoderMiss", 0.0, 0.0, 1.0), r.real("noiseSlipDistanceSigma", 0.0, 0.0, 10.0),
                 r.real("noiseSlipTurnSigma", 0.0, 0.0, 10.0));
-    }
-
-    /** What each client may make the server hold. */
-    public ClientBudgets clientBudgets() {
-        return new ClientBudgets(clientOutputBudget, clientTimeoutBudget, clientSubscriptionBudget, clientMessageBudget);
     }
 
     /**

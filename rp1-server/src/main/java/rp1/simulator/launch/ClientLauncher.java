@@ -154,7 +154,7 @@ final class ClientLauncher implements LoadedClient.Listener {
         ClientConnection connection = new ClientConnection(description);
         registry.add(connection);
         InProcessClient link = new InProcessClient(simulation, c.client, description, config.dlcSetLog, connection,
-                pipe -> OutboundQueue.start(Transport.of(pipe), config.clientQueueLimit, config.clientOutputBudget,
+                pipe -> OutboundQueue.start(Transport.of(pipe), config.clientQueueLimit, config.clientBudgets.output,
                         "writer " + description, connection::close));
         c.setLink(link);
         log.log(description + " connected");

@@ -142,7 +142,7 @@ public final class ServerLauncher {
         RsPlan plan = parse(config, text);
         log.log("randomSeed=" + seed + (config.randomSeed.isPresent() ? "" : "; set it to repeat this run"));
         Simulation simulation = new Simulation(plan, SimulationSettings.of(config, seed), log);
-        simulation.setClientBudgets(config.clientBudgets());
+        simulation.setClientBudgets(config.clientBudgets);
         log.setSimTime(simulation.getScheduler()::recordedTime);
         if (config.waitForClients > 0) {
             log.log("Simulated time waits until " + config.waitForClients + " robot" + (config.waitForClients == 1 ? " is" : "s are")
@@ -202,7 +202,7 @@ public final class ServerLauncher {
         WarmUp.run(parse(config, planText));
         try {
             ClientListener listener = ClientListener.bind(config.bindAddress, port, simulation, registry, log,
-                    new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit, config.clientBudgets()));
+                    new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit, config.clientBudgets));
             log.log("Socket ready: " + config.bindAddress + ":" + listener.getPort());
             return listener;
         } catch (IOException e) {
