@@ -1,11 +1,16 @@
 package rp1.rossum;
 
+import static rp1.rossum.wire.WireCodes.ACKERMAN;
+import static rp1.rossum.wire.WireCodes.CASTER;
+import static rp1.rossum.wire.WireCodes.DIFFERENTIAL;
+import static rp1.rossum.wire.WireCodes.EMPTY_SLOT;
+import static rp1.rossum.wire.WireCodes.PLAIN_WHEEL;
+
 import java.awt.Color;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 
-import rp1.rossum.wire.WireCodes;
 import rp1.rossum.wire.WireIn;
 import rp1.rossum.wire.WireLimits;
 import rp1.rossum.wire.WireOut;
@@ -23,12 +28,6 @@ import rp1.rossum.wire.WireOut;
  * wheel system the ids following the system's.
  */
 final class BodyCodec {
-    private static final int EMPTY_SLOT = WireCodes.EMPTY_SLOT;
-    private static final int DIFFERENTIAL = WireCodes.DIFFERENTIAL;
-    private static final int ACKERMAN = WireCodes.ACKERMAN;
-    private static final int PLAIN_WHEEL = WireCodes.PLAIN_WHEEL;
-    private static final int CASTER = WireCodes.CASTER;
-
     private BodyCodec() {
     }
 
