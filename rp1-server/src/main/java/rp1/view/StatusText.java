@@ -20,15 +20,10 @@ final class StatusText {
     }
 
     /**
-     * The simulation time and the pose of every robot, e.g.
+     * The simulation time, whether the run is paused (Run menu), and the pose of every robot, e.g.
      * {@code t = 12.500 s   ClientZero: x 1.234 m, y 2.000 m, heading 45.0 deg}. The time is the
      * clock's, not the snapshot's: it moves on while the robots stand still and no snapshot is taken.
      */
-    static String describe(double simTime, List<RobotSnapshot> robots, RsUnits units) {
-        return describe(simTime, false, robots, units);
-    }
-
-    /** As {@link #describe(double, List, RsUnits)}, saying after the time that the run is paused (Run menu). */
     static String describe(double simTime, boolean paused, List<RobotSnapshot> robots, RsUnits units) {
         StringBuilder b = new StringBuilder(String.format(Locale.ROOT, "t = %.3f s", simTime));
         if (paused) {

@@ -31,7 +31,7 @@ class DefaultWindowWidthTest {
                 double y = b.y + b.height * j / 20.0;
                 for (double heading = -180.0; heading < 180.0; heading += 22.5) {
                     RobotSnapshot r = new RobotSnapshot(1, robotName, true, x, y, Math.toRadians(heading), List.of());
-                    String line = StatusText.describe(3600.0 + i + j / 1000.0, List.of(r), units);
+                    String line = StatusText.describe(3600.0 + i + j / 1000.0, true, List.of(r), units);
                     widest = Math.max(widest, status.widthFor(List.of(line)));
                 }
             }

@@ -22,9 +22,9 @@ class StatusTextTest {
         List<RobotSnapshot> robots = List.of(new RobotSnapshot(1, "ClientZero", true, 1.234, 2.0, Math.toRadians(-90), List.of()),
                 new RobotSnapshot(2, "robot 2", false, 0, 0, 0, List.of()));
         assertEquals("t = 12.500 s   ClientZero: x 1.234 m, y 2.000 m, heading 270.0 deg   robot 2: not placed",
-                StatusText.describe(12.5, robots, new RsMeters()));
+                StatusText.describe(12.5, false, robots, new RsMeters()));
         assertEquals("t = 12.500 s   ClientZero: x 4 ft  0-19/32 in, y 6 ft  6-24/32 in, heading 270.0 deg   robot 2: not placed",
-                StatusText.describe(12.5, robots, new RsFeet()));
+                StatusText.describe(12.5, false, robots, new RsFeet()));
         assertEquals("t = 12.500 s (paused)   ClientZero: x 1.234 m, y 2.000 m, heading 270.0 deg   robot 2: not placed",
                 StatusText.describe(12.5, true, robots, new RsMeters()), "a paused run says so after the time");
     }
