@@ -11,6 +11,11 @@ final class SweptContact {
     /** Vertices closer than this (squared metres) to the pivot of an arc do not move and are skipped. */
     private static final double PIVOT_SQUARED = 1.0e-6;
     private static final double TWO_PI = 2.0 * Math.PI;
+    /**
+     * Slack, relative to the size of the coordinates, of the test that a wall is out of reach: far
+     * more than the rounding of the contact tests, so a wall it skips has no contact to find.
+     */
+    private static final double OUT_OF_REACH_SLACK = 1.0e-6;
 
     private SweptContact() {
     }
@@ -20,6 +25,14 @@ final class SweptContact {
      * or positive infinity if it does not.
      */
     static double line(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double dx, double dy) {
+        if (outOfLineReach(body, nBody, walls, nWalls, dx, dy)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return lineSearch(body, nBody, walls, nWalls, dx, dy);
+    }
+
+    /** {@link #line} without first skipping walls out of reach: every pair of edges is tested. */
+    static double lineSearch(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double dx, double dy) {
         return Math.min(sweep(body, nBody, walls, nWalls, dx, dy), sweep(walls, nWalls, body, nBody, -dx, -dy));
     }
 
@@ -49,6 +62,15 @@ final class SweptContact {
         if (totalAngle == 0.0) {
             return Double.POSITIVE_INFINITY;
         }
+        if (outOfArcReach(body, nBody, walls, nWalls, cx, cy)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return arcSearch(body, nBody, walls, nWalls, cx, cy, totalAngle);
+    }
+
+    /** {@link #arc} without first skipping walls out of reach: every pair of edges is tested. */
+    static double arcSearch(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls,
+                            double cx, double cy, double totalAngle) {
         double direction = Math.signum(totalAngle);
         double swept = Math.min(
                 turn(body, nBody, walls, nWalls, cx, cy, direction),
@@ -108,5 +130,94 @@ final class SweptContact {
         double qy = ey + u * e.v.y;
         double angle = direction * Math.atan2(px * qy - py * qx, px * qx + py * qy);
         return angle < 0.0 ? angle + TWO_PI : angle;
+    }
+
+    /**
+     * Whether no wall edge comes near the path of the body: the body lies in a disc about its first
+     * vertex, and every wall edge is farther from the segment that disc's centre travels than its
+     * radius. Most walls near a long path are, and skipping them skips the pairwise search.
+     */
+    private static boolean outOfLineReach(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls,
+                                          double dx, double dy) {
+        if (nBody == 0) {
+            return true;
+        }
+        double ox = body[0].x;
+        double oy = body[0].y;
+        double radius = Math.sqrt(farthestSquared(body, nBody, ox, oy));
+        double reach = radius + slack(ox, oy, radius + Math.abs(dx) + Math.abs(dy));
+        for (int j = 0; j < nWalls; j++) {
+            RsSegment e = walls[j];
+            if (segmentsDistanceSquared(ox, oy, dx, dy, e.x, e.y, e.v.x, e.v.y) <= reach * reach) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Whether no wall edge comes within the circle about the pivot that holds the whole body, which
+     * no part of the body leaves while it turns.
+     */
+    private static boolean outOfArcReach(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls,
+                                         double cx, double cy) {
+        double radius = Math.sqrt(farthestSquared(body, nBody, cx, cy));
+        double reach = radius + slack(cx, cy, radius);
+        for (int j = 0; j < nWalls; j++) {
+            RsSegment e = walls[j];
+            if (pointSegmentDistanceSquared(cx, cy, e.x, e.y, e.v.x, e.v.y) <= reach * reach) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static double slack(double x, double y, double size) {
+        return OUT_OF_REACH_SLACK * (1.0 + Math.abs(x) + Math.abs(y) + size);
+    }
+
+    /** The largest squared distance from (x, y) to either end of the segments. */
+    private static double farthestSquared(RsSegment[] segments, int n, double x, double y) {
+        double most = 0.0;
+        for (int i = 0; i < n; i++) {
+            RsSegment s = segments[i];
+            double ax = s.x - x;
+            double ay = s.y - y;
+            double bx = ax + s.v.x;
+            double by = ay + s.v.y;
+            most = Math.max(most, Math.max(ax * ax + ay * ay, bx * bx + by * by));
+        }
+        return most;
+    }
+
+    /** The squared distance from (px, py) to the segment from (x, y) along (vx, vy). */
+    private static double pointSegmentDistanceSquared(double px, double py, double x, double y, double vx, double vy) {
+        double wx = px - x;
+        double wy = py - y;
+        double length = vx * vx + vy * vy;
+        double u = length > 0.0 ? Math.max(0.0, Math.min(1.0, (wx * vx + wy * vy) / length)) : 0.0;
+        double ex = wx - u * vx;
+        double ey = wy - u * vy;
+        return ex * ex + ey * ey;
+    }
+
+    /** The squared distance between two segments, each from a point along a vector (0 if they cross). */
+    private static double segmentsDistanceSquared(double ax, double ay, double avx, double avy,
+                                                  double bx, double by, double bvx, double bvy) {
+        double det = avx * bvy - avy * bvx;
+        if (det != 0.0) {
+            double ex = bx - ax;
+            double ey = by - ay;
+            double u = (ex * bvy - ey * bvx) / det;
+            double w = (ex * avy - ey * avx) / det;
+            if (u >= 0.0 && u <= 1.0 && w >= 0.0 && w <= 1.0) {
+                return 0.0;
+            }
+        }
+        return Math.min(
+                Math.min(pointSegmentDistanceSquared(ax, ay, bx, by, bvx, bvy),
+                        pointSegmentDistanceSquared(ax + avx, ay + avy, bx, by, bvx, bvy)),
+                Math.min(pointSegmentDistanceSquared(bx, by, ax, ay, avx, avy),
+                        pointSegmentDistanceSquared(bx + bvx, by + bvy, ax, ay, avx, avy)));
     }
 }

@@ -1,0 +1,106 @@
+package rp1.rossum;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * The swept contact search skips walls that the moving body cannot reach before testing edge pairs.
+ * The skip must never change a contact time: for many random bodies, walls and motions, near and far,
+ * grazing and crossing, the search with the skip gives exactly what testing every pair gives.
+ */
+class SweptContactReachTest {
+    private static final int CASES = 20_000;
+
+    @Test
+    void skippingWallsOutOfReachNeverChangesAStraightMotionsContact() {
+        Random random = new Random(7);
+        int skipped = 0;
+        int hits = 0;
+        for (int i = 0; i < CASES; i++) {
+            RsSegment[] body = polygon(random, random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2, 0.05 + 0.4 * random.nextDouble());
+            RsSegment[] wall = wall(random);
+            double dx = (random.nextDouble() - 0.5) * 6;
+            double dy = (random.nextDouble() - 0.5) * 6;
+            double all = SweptContact.lineSearch(body, body.length, wall, wall.length, dx, dy);
+            double withSkip = SweptContact.line(body, body.length, wall, wall.length, dx, dy);
+            assertEquals(all, withSkip, 0.0, "case " + i);
+            skipped += Double.isInfinite(withSkip) ? 1 : 0;
+            hits += Double.isInfinite(all) ? 0 : 1;
+        }
+        assertTrue(skipped > CASES / 10 && hits > CASES / 20, "both outcomes occur: " + skipped + " without contact, " + hits + " with");
+    }
+
+    @Test
+    void skippingWallsOutOfReachNeverChangesATurnsContact() {
+        Random random = new Random(11);
+        int hits = 0;
+        for (int i = 0; i < CASES; i++) {
+            double x = random.nextDouble() * 4 - 2;
+            double y = random.nextDouble() * 4 - 2;
+            RsSegment[] body = polygon(random, x, y, 0.05 + 0.4 * random.nextDouble());
+            RsSegment[] wall = wall(random);
+            // Turning on the spot, or about a pivot some way off (an arc).
+            double cx = random.nextBoolean() ? x : x + (random.nextDouble() - 0.5) * 3;
+            double cy = random.nextBoolean() ? y : y + (random.nextDouble() - 0.5) * 3;
+            double angle = (random.nextDouble() - 0.5) * 4 * Math.PI;
+            double all = SweptContact.arcSearch(body, body.length, wall, wall.length, cx, cy, angle);
+            double withSkip = SweptContact.arc(body, body.length, wall, wall.length, cx, cy, angle);
+            assertEquals(all, withSkip, 0.0, "case " + i);
+            hits += Double.isInfinite(all) ? 0 : 1;
+        }
+        assertTrue(hits > CASES / 20 && hits < CASES - CASES / 10, hits + " of " + CASES + " with contact");
+    }
+
+    @Test
+    void aWallTheBodyJustReachesAtTheEndOfItsMotionIsStillFound() {
+        // A unit square from (0, 0) driving 2 m along x: its front edge reaches x = 3 exactly at the end.
+        RsSegment[] body = square(0, 0, 1);
+        RsSegment[] wall = {new RsSegment(3, -5, 3, 5)};
+        assertEquals(1.0, SweptContact.line(body, body.length, wall, wall.length, 2, 0), 0.0);
+        // Its far corner sweeps a circle of radius sqrt(2) about the origin: a wall touching it is met.
+        RsSegment[] tangent = {new RsSegment(Math.sqrt(2.0), -5, Math.sqrt(2.0), 5)};
+        double turn = SweptContact.arc(body, body.length, tangent, tangent.length, 0, 0, 2 * Math.PI);
+        assertEquals(SweptContact.arcSearch(body, body.length, tangent, tangent.length, 0, 0, 2 * Math.PI), turn, 0.0);
+        assertTrue(Double.isFinite(turn));
+    }
+
+    /** A convex polygon of 3 to 8 vertices on a circle of radius r about (x, y), as closed edges. */
+    private static RsSegment[] polygon(Random random, double x, double y, double r) {
+        int n = 3 + random.nextInt(6);
+        double start = random.nextDouble() * 2 * Math.PI;
+        double[] px = new double[n];
+        double[] py = new double[n];
+        for (int i = 0; i < n; i++) {
+            double a = start + 2 * Math.PI * i / n;
+            px[i] = x + r * Math.cos(a);
+            py[i] = y + r * Math.sin(a);
+        }
+        RsSegment[] edges = new RsSegment[n];
+        for (int i = 0; i < n; i++) {
+            edges[i] = new RsSegment(px[i], py[i], px[(i + 1) % n], py[(i + 1) % n]);
+        }
+        return edges;
+    }
+
+    /** A wall: a single segment or a small polygon, anywhere in a 6 m square about the origin. */
+    private static RsSegment[] wall(Random random) {
+        double x = (random.nextDouble() - 0.5) * 6;
+        double y = (random.nextDouble() - 0.5) * 6;
+        if (random.nextBoolean()) {
+            return polygon(random, x, y, 0.05 + random.nextDouble());
+        }
+        double a = random.nextDouble() * 2 * Math.PI;
+        double length = random.nextDouble() * 4;
+        return new RsSegment[] {new RsSegment(x, y, x + length * Math.cos(a), y + length * Math.sin(a))};
+    }
+
+    private static RsSegment[] square(double x, double y, double side) {
+        return new RsSegment[] {
+            new RsSegment(x, y, x + side, y), new RsSegment(x + side, y, x + side, y + side),
+            new RsSegment(x + side, y + side, x, y + side), new RsSegment(x, y + side, x, y)};
+    }
+}
