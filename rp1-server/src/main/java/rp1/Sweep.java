@@ -17,6 +17,7 @@ import rp1.simulator.batch.RunEngine;
 import rp1.simulator.batch.SummaryCsv;
 import rp1.simulator.batch.SweepException;
 import rp1.simulator.batch.SweepOptions;
+import rp1.view.SweepPicture;
 import rp1.web.SweepIndex;
 
 /**
@@ -102,6 +103,9 @@ public final class Sweep {
                     + batch.plans().size() + " plan" + (batch.plans().size() == 1 ? "" : "s") + "), " + options.jobs
                     + " at a time, into " + batch.out()
                     + (options.resume ? "; " + batch.kept().size() + " finished before, " + toRun + " to run" : ""));
+            Thread warmUp = new Thread(SweepPicture::warmUp, "rp1-picture-warm-up");
+            warmUp.setDaemon(true);
+            warmUp.start();
             Batch.Result result = batch.run(new Progress(toRun, out, terminal));
             List<Batch.Outcome> outcomes = result.outcomes();
             Path summary = batch.out().resolve("summary.png");

@@ -9,9 +9,12 @@ import java.awt.RenderingHints;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
+
+import javax.imageio.ImageIO;
 
 import rp1.rossum.RsPlan;
 import rp1.simulator.snapshot.WorldSnapshot;
@@ -60,6 +63,39 @@ public final class SweepPicture {
     public static Color colour(int index) {
         float hue = (float) ((index * 0.6180339887) % 1.0);
         return Color.getHSBColor(hue, 0.85f, index % 2 == 0 ? 0.75f : 0.55f);
+    }
+
+    /**
+     * Draws a small picture with what {@link #draw} uses (antialiased strokes, shapes, text) and encodes
+     * it as PNG, for nothing: the first use of Java 2D and of the PNG encoder in a JVM loads and
+     * compiles a great deal (fonts, the rasterizer, the encoder). A sweep calls this on a thread of its
+     * own while its runs compute, so that its summary picture at the end does not wait for that.
+     */
+    public static void warmUp() {
+        BufferedImage image = new BufferedImage(96, 48, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setColor(Color.white);
+            g.fillRect(0, 0, 96, 48);
+            g.setStroke(new BasicStroke(TRAIL_WIDTH, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+            g.setColor(colour(1));
+            Path2D.Double path = new Path2D.Double();
+            path.moveTo(2.5, 3.5);
+            path.lineTo(60.25, 40.75);
+            path.lineTo(90.5, 10.25);
+            g.draw(path);
+            g.fill(circle(20, 20));
+            g.drawString("0.5 m", 10, g.getFontMetrics().getAscent() + 2);
+        } finally {
+            g.dispose();
+        }
+        try {
+            ImageIO.write(image, "png", new ByteArrayOutputStream());
+        } catch (IOException e) {
+            // Only a warm-up: the real picture reports its own failures.
+        }
     }
 
     /** Draws the picture and writes it as PNG. */
