@@ -146,9 +146,14 @@ final class SweptContact {
         double oy = body[0].y;
         double radius = Math.sqrt(farthestSquared(body, nBody, ox, oy));
         double reach = radius + slack(ox, oy, radius + Math.abs(dx) + Math.abs(dy));
+        double x0 = Math.min(ox, ox + dx) - reach;
+        double x1 = Math.max(ox, ox + dx) + reach;
+        double y0 = Math.min(oy, oy + dy) - reach;
+        double y1 = Math.max(oy, oy + dy) + reach;
         for (int j = 0; j < nWalls; j++) {
             RsSegment e = walls[j];
-            if (segmentsDistanceSquared(ox, oy, dx, dy, e.x, e.y, e.v.x, e.v.y) <= reach * reach) {
+            if (boxesMeet(e, x0, y0, x1, y1)
+                    && segmentsDistanceSquared(ox, oy, dx, dy, e.x, e.y, e.v.x, e.v.y) <= reach * reach) {
                 return false;
             }
         }
@@ -165,11 +170,19 @@ final class SweptContact {
         double reach = radius + slack(cx, cy, radius);
         for (int j = 0; j < nWalls; j++) {
             RsSegment e = walls[j];
-            if (pointSegmentDistanceSquared(cx, cy, e.x, e.y, e.v.x, e.v.y) <= reach * reach) {
+            if (boxesMeet(e, cx - reach, cy - reach, cx + reach, cy + reach)
+                    && pointSegmentDistanceSquared(cx, cy, e.x, e.y, e.v.x, e.v.y) <= reach * reach) {
                 return false;
             }
         }
         return true;
+    }
+
+    /** Whether the segment's bounding box meets the box [x0, x1] x [y0, y1]: a cheap first test. */
+    private static boolean boxesMeet(RsSegment e, double x0, double y0, double x1, double y1) {
+        double ex1 = e.x + e.v.x;
+        double ey1 = e.y + e.v.y;
+        return Math.max(e.x, ex1) >= x0 && Math.min(e.x, ex1) <= x1 && Math.max(e.y, ey1) >= y0 && Math.min(e.y, ey1) <= y1;
     }
 
     private static double slack(double x, double y, double size) {

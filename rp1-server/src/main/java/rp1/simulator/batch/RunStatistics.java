@@ -1,6 +1,7 @@
 package rp1.simulator.batch;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -84,7 +85,7 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         for (Watched w : robots.values()) {
             boolean present = world.getRobots().stream().anyMatch(r -> r.getNumber() == w.number);
             RobotResult.Pose end = w.start == RobotResult.Pose.NONE ? RobotResult.Pose.NONE
-                    : present ? w.poseAt(endTime) : new RobotResult.Pose(w.x, w.y, w.heading);
+                    : present ? w.poseAt(endTime) : new RobotResult.Pose(w.x, w.y, w.heading());
             out.add(new RobotResult(names.get(i++), w.start, end, present ? w.distanceAt(endTime) : w.distance(),
                     w.collisions, w.firstCollision, eventsByClient.getOrDefault(w.client, 0L),
                     simulation.getReportedResults().of(w.client)));
@@ -113,8 +114,8 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         int i = 0;
         for (Watched w : robots.values()) {
             List<double[]> pieces = new ArrayList<>();
-            for (List<Double> p : w.pieces) {
-                pieces.add(Trail.simplified(Trail.piece(p), TRAIL_TOLERANCE));
+            for (Points p : w.pieces) {
+                pieces.add(Trail.simplified(p.toArray(), TRAIL_TOLERANCE));
             }
             out.add(new Trail(names.get(i++), pieces));
         }
@@ -131,12 +132,14 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         RobotResult.Pose start = RobotResult.Pose.NONE;
         double x;
         double y;
-        double heading;
+        /** The heading's cosine and sine as last seen (the angle itself is only worked out if asked for). */
+        double cos;
+        double sin;
         /** Distance of the motions that are over. */
         double travelled;
         RsMotion motion;
         int series = Integer.MIN_VALUE;
-        final List<List<Double>> pieces = new ArrayList<>();
+        final List<Points> pieces = new ArrayList<>();
 
         Watched(int number, String label) {
             this.number = number;
@@ -155,7 +158,8 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
             RsTransform pose = r.pose();
             x = pose.m13;
             y = pose.m23;
-            heading = pose.getTheta();
+            cos = pose.m11;
+            sin = pose.m21;
             if (r.isPlaced()) {
                 if (start == RobotResult.Pose.NONE) {
                     RsTransform first = m.transform0 != null ? m.transform0 : pose;
@@ -166,16 +170,20 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         }
 
         private void sample(int id) {
-            List<Double> piece = pieces.isEmpty() ? null : pieces.get(pieces.size() - 1);
+            Points piece = pieces.isEmpty() ? null : pieces.get(pieces.size() - 1);
             if (id != series || piece == null) {
                 series = id;
-                piece = new ArrayList<>();
+                piece = new Points();
                 pieces.add(piece);
-            } else if (Math.hypot(x - piece.get(piece.size() - 2), y - piece.get(piece.size() - 1)) < TRAIL_RESOLUTION) {
+            } else if (piece.closeToLast(x, y, TRAIL_RESOLUTION)) {
                 return;
             }
-            piece.add(x);
-            piece.add(y);
+            piece.add(x, y);
+        }
+
+        /** The heading last seen, radians (as {@link RsTransform#getTheta()} gives it). */
+        double heading() {
+            return Math.atan2(sin, cos);
         }
 
         double distance() {
@@ -193,7 +201,7 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         /** The pose at {@code t} along the current motion (the last pose seen if there is none). */
         RobotResult.Pose poseAt(double t) {
             if (motion == null || Double.isNaN(t)) {
-                return new RobotResult.Pose(x, y, heading);
+                return new RobotResult.Pose(x, y, heading());
             }
             RsTransform p = motion.getPoseAtTime(t);
             return new RobotResult.Pose(p.m13, p.m23, p.getTheta());
@@ -202,6 +210,29 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         /** How far the body origin went along {@code m} so far (its speed is constant along it). */
         private static double covered(RsMotion m) {
             return m == null ? 0.0 : Math.abs(m.getVelocity()) * (m.time - m.time0);
+        }
+    }
+
+    /** A piece of trail as it grows: x0, y0, x1, y1, ... without a boxed number per coordinate. */
+    private static final class Points {
+        private double[] xy = new double[64];
+        private int size;
+
+        void add(double x, double y) {
+            if (size + 2 > xy.length) {
+                xy = Arrays.copyOf(xy, 2 * xy.length);
+            }
+            xy[size++] = x;
+            xy[size++] = y;
+        }
+
+        /** Whether (x, y) is within {@code distance} of the last point. */
+        boolean closeToLast(double x, double y, double distance) {
+            return Math.hypot(x - xy[size - 2], y - xy[size - 1]) < distance;
+        }
+
+        double[] toArray() {
+            return Arrays.copyOf(xy, size);
         }
     }
 }

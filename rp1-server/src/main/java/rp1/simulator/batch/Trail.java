@@ -33,10 +33,12 @@ public record Trail(String robot, List<double[]> pieces) {
             int[] span = spans.pop();
             int farthest = -1;
             double most = tolerance;
+            double surelyLess = below(most);
             for (int i = span[0] + 1; i < span[1]; i++) {
-                double d = distance(xy, i, span[0], span[1]);
+                double d = distance(xy, i, span[0], span[1], surelyLess);
                 if (d > most) {
                     most = d;
+                    surelyLess = below(most);
                     farthest = i;
                 }
             }
@@ -60,8 +62,20 @@ public record Trail(String robot, List<double[]> pieces) {
         return out;
     }
 
-    /** How far point {@code i} is from the segment between points {@code a} and {@code b}. */
-    private static double distance(double[] xy, int i, int a, int b) {
+    /**
+     * A squared distance under which the distance itself is surely below {@code d}, rounding
+     * included: most points lie well within the tolerance, and for them the exact (and slow)
+     * {@link Math#hypot} is not needed to know it.
+     */
+    private static double below(double d) {
+        return d * d * (1.0 - 1.0e-9);
+    }
+
+    /**
+     * How far point {@code i} is from the segment between points {@code a} and {@code b}; 0 if its
+     * squared distance is below {@code surelyLess}.
+     */
+    private static double distance(double[] xy, int i, int a, int b, double surelyLess) {
         double ax = xy[2 * a];
         double ay = xy[2 * a + 1];
         double dx = xy[2 * b] - ax;
@@ -70,7 +84,9 @@ public record Trail(String robot, List<double[]> pieces) {
         double py = xy[2 * i + 1] - ay;
         double length2 = dx * dx + dy * dy;
         double t = length2 == 0 ? 0 : Math.max(0, Math.min(1, (px * dx + py * dy) / length2));
-        return Math.hypot(px - t * dx, py - t * dy);
+        double ex = px - t * dx;
+        double ey = py - t * dy;
+        return ex * ex + ey * ey < surelyLess ? 0.0 : Math.hypot(ex, ey);
     }
 
     /** A piece of path from its coordinates {@code x0, y0, x1, y1, ...}. */
