@@ -56,6 +56,11 @@ final class LoaderRuns implements RunEngine {
     }
 
     @Override
+    public boolean firstRunWarmsUp() {
+        return true;
+    }
+
+    @Override
     public void stopAll() {
         stopping = true;
         running.forEach(s -> s.requestStop(ExitStatus.OK));

@@ -25,6 +25,15 @@ public interface RunEngine {
     void stopAll();
 
     /**
+     * Whether the engine's first run is best carried out alone: true for runs in this process, whose
+     * first run loads and compiles what every later run shares (two cold runs at once only wait for
+     * each other's class loading and for the one compiler thread).
+     */
+    default boolean firstRunWarmsUp() {
+        return false;
+    }
+
+    /**
      * The sweep's engine for runs in this process ({@code --isolation loader}): each with a class
      * loader of its own for the robot's classes and a world of its own. rp1-spark's executors run
      * their tasks with it.
