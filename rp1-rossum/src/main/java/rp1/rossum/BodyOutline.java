@@ -90,6 +90,20 @@ final class BodyOutline {
         return out;
     }
 
+    /**
+     * The edges mapped by {@code t}, written into {@code into} if it has room for exactly as many
+     * (else into new segments): for searches that keep one outline to fill again and again.
+     */
+    static RsSegment[] mapInto(RsSegment[] edges, RsTransform t, RsSegment[] into) {
+        if (into == null || into.length != edges.length) {
+            return map(edges, t);
+        }
+        for (int i = 0; i < edges.length; i++) {
+            t.map2(edges[i], into[i]);
+        }
+        return into;
+    }
+
     /** Independent copies of the edges. */
     static RsSegment[] copy(RsSegment[] edges) {
         RsSegment[] out = new RsSegment[edges.length];

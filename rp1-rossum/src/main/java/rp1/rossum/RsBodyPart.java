@@ -53,6 +53,11 @@ public abstract class RsBodyPart extends RsComponent {
     private volatile boolean numbered;
     /** The body or actuator this part was added to last, or null: whose numbering it takes part in. */
     private RsComponent owner;
+    /**
+     * The collision outline where the last motion searched started, kept to be filled anew by the
+     * next search instead of allocating a copy of every edge for each.
+     */
+    private transient RsSegment[] startOutline;
 
     /** A part, numbered with its body (see the class comment). */
     public RsBodyPart() {
@@ -166,7 +171,8 @@ public abstract class RsBodyPart extends RsComponent {
         if (outline == null || outline.length == 0 || walls == null || motion == null) {
             return false;
         }
-        RsSegment[] body = BodyOutline.map(outline, motion.transform0);
+        RsSegment[] body = BodyOutline.mapInto(outline, motion.transform0, startOutline);
+        startOutline = body;
         boolean hit = false;
         for (RsWall wall : walls) {
             RsSegment[] edges = wall.getSegmentArray();
