@@ -176,6 +176,10 @@ public abstract class RsBodyPart extends RsComponent {
         boolean hit = false;
         for (RsWall wall : walls) {
             RsSegment[] edges = wall.getSegmentArray();
+            // Once this part has a contact, a wall that can only be met later changes nothing.
+            if (hit && motion.cannotMeetBefore(body, body.length, edges, edges.length, motion.collisionTime)) {
+                continue;
+            }
             if (motion.processCollision(body, body.length, edges, edges.length)) {
                 hit = true;
             }

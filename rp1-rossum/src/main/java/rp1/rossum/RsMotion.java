@@ -157,6 +157,15 @@ public abstract class RsMotion extends RsComponent {
         return Double.POSITIVE_INFINITY;
     }
 
+    /**
+     * Whether the body cannot touch the walls before {@code t} seconds after the motion's start: a
+     * cheap bound that lets a search which has found a contact skip walls farther along the way.
+     * False when this motion has no such bound.
+     */
+    boolean cannotMeetBefore(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double t) {
+        return false;
+    }
+
     /** Records a contact time found by a search; returns whether there was one. */
     final boolean recordContact(double t) {
         if (Double.isInfinite(t)) {

@@ -70,6 +70,13 @@ public class RsMotionLine extends RsMotion {
         return timeTotal * SweptContact.line(body, nBody, walls, nWalls, distance * ux, distance * uy);
     }
 
+    @Override
+    boolean cannotMeetBefore(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double t) {
+        double distance = velocity * timeTotal;
+        return timeTotal > 0.0
+                && SweptContact.lineBeyond(body, nBody, walls, nWalls, distance * ux, distance * uy, t / timeTotal);
+    }
+
     /**
      * Cuts the motion at the predicted contact (see {@link RsMotion#truncateForCollision}). Declared
      * here, as in RP1 0.60's API, so that the class keeps the original's member list.

@@ -16,6 +16,11 @@ final class SweptContact {
      * more than the rounding of the contact tests, so a wall it skips has no contact to find.
      */
     private static final double OUT_OF_REACH_SLACK = 1.0e-6;
+    /**
+     * Slack, relative to the size of the coordinates and of the displacement, of the test that walls
+     * lie beyond a contact already found: far more than the rounding of a contact's fraction.
+     */
+    private static final double ROUNDING_SLACK = 1.0e-9;
 
     private SweptContact() {
     }
@@ -29,6 +34,34 @@ final class SweptContact {
             return Double.POSITIVE_INFINITY;
         }
         return lineSearch(body, nBody, walls, nWalls, dx, dy);
+    }
+
+    /**
+     * Whether the walls lie wholly beyond the point the body reaches at {@code fraction} of the
+     * displacement (dx, dy): along the direction of travel, their nearest vertex is farther ahead of
+     * the body's foremost vertex than that, so {@link #line} could only find a later contact. A
+     * search that has found a contact skips such walls.
+     */
+    static boolean lineBeyond(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls,
+                              double dx, double dy, double fraction) {
+        double length = Math.hypot(dx, dy);
+        if (length == 0.0 || nBody == 0 || nWalls == 0) {
+            return false;
+        }
+        double ux = dx / length;
+        double uy = dy / length;
+        double front = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < nBody; i++) {
+            RsSegment s = body[i];
+            front = Math.max(front, Math.max(s.x * ux + s.y * uy, (s.x + s.v.x) * ux + (s.y + s.v.y) * uy));
+        }
+        double back = Double.POSITIVE_INFINITY;
+        for (int j = 0; j < nWalls; j++) {
+            RsSegment e = walls[j];
+            back = Math.min(back, Math.min(e.x * ux + e.y * uy, (e.x + e.v.x) * ux + (e.y + e.v.y) * uy));
+        }
+        double slack = ROUNDING_SLACK * (1.0 + Math.abs(body[0].x) + Math.abs(body[0].y) + length);
+        return back - front > fraction * length + slack;
     }
 
     /** {@link #line} without first skipping walls out of reach: every pair of edges is tested. */

@@ -56,6 +56,31 @@ class SweptContactReachTest {
     }
 
     @Test
+    void wallsSkippedAsBeyondAContactFoundHaveNoEarlierContact() {
+        Random random = new Random(13);
+        int skipped = 0;
+        for (int i = 0; i < CASES; i++) {
+            RsSegment[] body = polygon(random, random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2, 0.05 + 0.4 * random.nextDouble());
+            RsSegment[] wall = wall(random);
+            double dx = (random.nextDouble() - 0.5) * 6;
+            double dy = (random.nextDouble() - 0.5) * 6;
+            double found = random.nextDouble();
+            if (SweptContact.lineBeyond(body, body.length, wall, wall.length, dx, dy, found)) {
+                skipped++;
+                double contact = SweptContact.lineSearch(body, body.length, wall, wall.length, dx, dy);
+                assertTrue(contact > found, "case " + i + ": skipped a contact at " + contact + " before " + found);
+            }
+        }
+        assertTrue(skipped > CASES / 20, skipped + " of " + CASES + " skipped");
+        // A unit square driving 2 m along x meets a wall at x = 3 after half the way, and not beyond it.
+        RsSegment[] square = square(0, 0, 1);
+        RsSegment[] wall = {new RsSegment(2, -5, 2, 5)};
+        assertEquals(0.5, SweptContact.line(square, square.length, wall, wall.length, 2, 0), 0.0);
+        assertTrue(!SweptContact.lineBeyond(square, square.length, wall, wall.length, 2, 0, 0.5));
+        assertTrue(SweptContact.lineBeyond(square, square.length, wall, wall.length, 2, 0, 0.49));
+    }
+
+    @Test
     void aWallTheBodyJustReachesAtTheEndOfItsMotionIsStillFound() {
         // A unit square from (0, 0) driving 2 m along x: its front edge reaches x = 3 exactly at the end.
         RsSegment[] body = square(0, 0, 1);
