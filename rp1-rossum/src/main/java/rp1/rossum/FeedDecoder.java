@@ -1,7 +1,5 @@
 package rp1.rossum;
 
-import java.io.ByteArrayInputStream;
-import java.io.DataInputStream;
 import java.io.IOException;
 import java.util.Objects;
 
@@ -73,7 +71,7 @@ final class FeedDecoder {
                 }
                 int from = at;
                 at += size;
-                messages.read(wireOf(buffer, from, size));
+                messages.read(WireIn.of(buffer, from, size));
             }
         } finally {
             if (inPlace) {
@@ -107,14 +105,10 @@ final class FeedDecoder {
      */
     private TruncatedMessageException truncation(byte[] b, int at, int end) throws IOException {
         try {
-            messages.read(wireOf(b, at, end - at));
+            messages.read(WireIn.of(b, at, end - at));
         } catch (TruncatedMessageException e) {
             return e;
         }
         throw new IllegalStateException("an incomplete message of " + (end - at) + " bytes decoded whole");
-    }
-
-    private static WireIn wireOf(byte[] b, int offset, int length) {
-        return new WireIn(new DataInputStream(new ByteArrayInputStream(b, offset, length)));
     }
 }

@@ -103,13 +103,6 @@ public final class MessageScanner {
         return scanned;
     }
 
-    /** Forgets the message being scanned (the session ended). */
-    public void reset() {
-        steps.clear();
-        started = false;
-        scanned = 0;
-    }
-
     private static int value(byte[] b, int at, int width) {
         int v = 0;
         for (int i = 0; i < width; i++) {

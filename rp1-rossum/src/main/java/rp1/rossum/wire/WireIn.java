@@ -24,7 +24,12 @@ public final class WireIn {
 
     /** A reader over a byte array, for tests and for decoding captured messages. */
     public static WireIn of(byte[] bytes) {
-        return new WireIn(new DataInputStream(new ByteArrayInputStream(bytes)));
+        return of(bytes, 0, bytes.length);
+    }
+
+    /** Reads {@code length} bytes of {@code bytes} from {@code offset}. */
+    public static WireIn of(byte[] bytes, int offset, int length) {
+        return new WireIn(new DataInputStream(new ByteArrayInputStream(bytes, offset, length)));
     }
 
     /** An I32 (big-endian); {@code field} names it if the bytes end first. */
