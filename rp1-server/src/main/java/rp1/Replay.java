@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.Locale;
 
+import rp1.io.WholeFiles;
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.batch.RunStatistics;
@@ -99,7 +100,7 @@ public final class Replay {
      * named, so the user knows where its remains are.
      */
     private static Path existing(Path recording) throws RecordingException {
-        Path part = recording.resolveSibling(recording.getFileName() + ".part");
+        Path part = WholeFiles.partOf(recording);
         if (Files.notExists(recording) && Files.exists(part)) {
             throw new RecordingException(recording + " does not exist, but " + part + " does: the run did not stop"
                     + " cleanly; replay what it left with: rp1.Replay " + part);

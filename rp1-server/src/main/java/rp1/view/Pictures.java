@@ -1,20 +1,20 @@
 package rp1.view;
 
+import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.BasicStroke;
 import java.awt.Graphics2D;
 import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 import java.util.Locale;
 
 import javax.imageio.ImageIO;
 
+import rp1.io.WholeFiles;
 import rp1.rossum.RsPoint;
 import rp1.rossum.RsRectangle;
 import rp1.rossum.RsTransform;
@@ -153,19 +153,10 @@ public final class Pictures {
         if (dir != null) {
             Files.createDirectories(dir);
         }
-        Path partial = absolute.resolveSibling(absolute.getFileName() + ".part");
-        try {
-            if (!ImageIO.write(image, "png", partial.toFile())) {
+        WholeFiles.write(absolute, part -> {
+            if (!ImageIO.write(image, "png", part.toFile())) {
                 throw new IOException("no PNG writer available");
             }
-            Files.move(partial, absolute, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-        } catch (IOException | RuntimeException e) {
-            try {
-                Files.deleteIfExists(partial);
-            } catch (IOException cleanup) {
-                e.addSuppressed(cleanup);
-            }
-            throw e;
-        }
+        });
     }
 }

@@ -1,12 +1,10 @@
 package rp1.web;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 
+import rp1.io.WholeFiles;
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.record.RecordingException;
@@ -45,8 +43,6 @@ public final class ReplayPage {
     public static void write(RunTrace trace, String title, double end, Path page) throws IOException {
         trace.close();
         String html = Page.replay(title, trace.planJson(), List.of(trace.drain()), end);
-        Path part = page.resolveSibling(page.getFileName() + ".part");
-        Files.write(part, html.getBytes(StandardCharsets.UTF_8));
-        Files.move(part, page, StandardCopyOption.REPLACE_EXISTING);
+        WholeFiles.writeString(page, html);
     }
 }

@@ -5,7 +5,6 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -13,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
+import rp1.io.WholeFiles;
 import rp1.simulator.record.RecordingException;
 
 /**
@@ -60,9 +60,7 @@ public final class SweepIndex {
                 .endObject().toString();
         String html = template().replace("/*RP1-DATA*/", data);
         Path index = out.resolve(NAME);
-        Path part = out.resolve(NAME + ".part");
-        Files.write(part, html.getBytes(StandardCharsets.UTF_8));
-        Files.move(part, index, StandardCopyOption.REPLACE_EXISTING);
+        WholeFiles.writeString(index, html);
         return failures;
     }
 

@@ -6,7 +6,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -16,6 +15,8 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+
+import rp1.io.WholeFiles;
 
 /**
  * A sweep's {@code results.csv}: one row per run and robot, with a column per varied key and per
@@ -96,9 +97,7 @@ public final class ResultsCsv implements AutoCloseable {
         for (Batch.Outcome o : outcomes) {
             rows.addAll(rows(o, varied, names));
         }
-        Path part = file.resolveSibling(file.getFileName() + ".part");
-        Files.write(part, text(rows).getBytes(StandardCharsets.UTF_8));
-        Files.move(part, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        WholeFiles.writeString(file, text(rows));
     }
 
     /** The names of the results the robots of {@code outcomes} reported, in the order first seen. */

@@ -4,11 +4,12 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+
+import rp1.io.WholeFiles;
 
 /**
  * A sweep's {@code summary.csv}: one row per configuration (the varied keys' values, the plan and the
@@ -109,9 +110,7 @@ public final class SummaryCsv {
         List<List<String>> table = CsvText.rows(Files.readString(results, StandardCharsets.UTF_8));
         List<String> header = table.get(0);
         List<Row> rows = summarize(header, table.subList(1, table.size()), varied);
-        Path part = file.resolveSibling(file.getFileName() + ".part");
-        Files.write(part, ResultsCsv.text(table(rows, metrics(header, varied))).getBytes(StandardCharsets.UTF_8));
-        Files.move(part, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        WholeFiles.writeString(file, ResultsCsv.text(table(rows, metrics(header, varied))));
         return rows;
     }
 }

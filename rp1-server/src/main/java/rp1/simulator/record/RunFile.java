@@ -7,6 +7,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 
+import rp1.io.WholeFiles;
+
 /**
  * A file a run writes as it goes (a recording, an event log): under {@code NAME.part} until the run
  * ends cleanly, then renamed {@code NAME} in one step, so a file under its final name is always whole.
@@ -27,7 +29,7 @@ final class RunFile {
 
     /** Where a file is written until it is finished: {@code NAME.part} beside it. */
     static Path partOf(Path file) {
-        return file.resolveSibling(file.getFileName() + ".part");
+        return WholeFiles.partOf(file);
     }
 
     /**
