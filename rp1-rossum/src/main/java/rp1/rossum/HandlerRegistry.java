@@ -11,8 +11,9 @@ import rp1.rossum.wire.EventKey;
 
 /**
  * The client's event handlers, keyed by (event code, index) where the index is the sensor id for
- * sensor events and 0 otherwise. Handlers for a key are kept in registration order. Dispatch works
- * on a snapshot, so a handler may add or remove handlers while an event is being delivered.
+ * sensor events and 0 otherwise. Handlers for a key are kept in registration order, as a list that is
+ * never changed but replaced: dispatch takes the list as it is (a snapshot that costs nothing, once per
+ * event), so a handler may add or remove handlers while an event is being delivered.
  */
 final class HandlerRegistry {
     private final Map<Long, List<RsEventHandler>> handlers = new HashMap<>();
@@ -25,7 +26,9 @@ final class HandlerRegistry {
     }
 
     synchronized void add(int code, int index, RsEventHandler handler) {
-        handlers.computeIfAbsent(EventKey.of(code, index), k -> new ArrayList<>()).add(handler);
+        List<RsEventHandler> grown = new ArrayList<>(handlers.getOrDefault(EventKey.of(code, index), List.of()));
+        grown.add(handler);
+        handlers.put(EventKey.of(code, index), Collections.unmodifiableList(grown));
     }
 
     /**
@@ -36,7 +39,9 @@ final class HandlerRegistry {
     synchronized void remove(int code, int index, RsEventHandler handler) {
         List<RsEventHandler> list = handlers.get(EventKey.of(code, index));
         if (list != null) {
-            list.removeIf(handler::equals);
+            List<RsEventHandler> kept = new ArrayList<>(list);
+            kept.removeIf(handler::equals);
+            handlers.put(EventKey.of(code, index), Collections.unmodifiableList(kept));
         }
     }
 
@@ -45,9 +50,8 @@ final class HandlerRegistry {
         handlers.remove(EventKey.of(code, index));
     }
 
-    /** The handlers for the key, in registration order, as a snapshot. */
+    /** The handlers for the key, in registration order, as a snapshot (an unmodifiable list). */
     synchronized List<RsEventHandler> snapshot(int code, int index) {
-        List<RsEventHandler> list = handlers.get(EventKey.of(code, index));
-        return list == null ? Collections.emptyList() : new ArrayList<>(list);
+        return handlers.getOrDefault(EventKey.of(code, index), List.of());
     }
 }
