@@ -61,8 +61,21 @@ public final class ServerLog extends RsLogAdapter {
         if (millis < 0) {
             millis += 10_000_000L;
         }
-        return String.format(Locale.ROOT, "%s %s %04d.%03d: %s",
-                level, wallClock.format(WALL_CLOCK), millis / 1000, millis % 1000, message);
+        // As String.format("%s %s %04d.%03d: %s", ...) would, without parsing a format for every line.
+        StringBuilder line = new StringBuilder(32 + message.length()).append(level).append(' ');
+        WALL_CLOCK.formatTo(wallClock, line);
+        line.append(' ');
+        padded(line, millis / 1000, 4).append('.');
+        return padded(line, millis % 1000, 3).append(": ").append(message).toString();
+    }
+
+    /** Appends {@code value} (not negative) with zeros in front to {@code digits} digits. */
+    private static StringBuilder padded(StringBuilder line, long value, int digits) {
+        String text = Long.toString(value);
+        for (int i = text.length(); i < digits; i++) {
+            line.append('0');
+        }
+        return line.append(text);
     }
 
     /**

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.ViewInput;
@@ -23,6 +24,9 @@ import rp1.simulator.world.WorldModel;
  * notes in the file (if it still can) that the recording broke off, and {@link #failure()} says why.
  */
 public final class Recorder implements InputQueue.Listener {
+    /** Where the plan's text is cut into the recording's plan lines (any line ending). */
+    private static final Pattern LINE_BREAK = Pattern.compile("\r\n|\r|\n");
+
     /** What a run starts from. */
     public record Header(Map<String, String> properties, String planName, String planText, long seed) {
     }
@@ -69,7 +73,7 @@ public final class Recorder implements InputQueue.Listener {
         for (Map.Entry<String, String> p : h.properties().entrySet()) {
             write(new TextLine(RecordingFormat.PROPERTY).text(p.getKey()).text(p.getValue()));
         }
-        String[] lines = h.planText().split("\r\n|\r|\n", -1);
+        String[] lines = LINE_BREAK.split(h.planText(), -1);
         write(new TextLine(RecordingFormat.PLAN).text(h.planName()).integer(lines.length));
         for (String line : lines) {
             out.write((RecordingFormat.PLAN_LINE + line + "\n").getBytes(StandardCharsets.UTF_8));
