@@ -23,7 +23,9 @@ import rp1.simulator.launch.RunningServer;
  * two builds' runs line by line up to a time. The clock is
  * counted from the moment all are placed. A crowd's cost changes as it moves (robots meet, press and
  * part), so the measure is over simulated time, the same stretch whatever the machine's speed: after
- * a warm-up of a fifth of SIMULATED seconds, the wall time the next SIMULATED seconds take; printed as
+ * a warm-up of a fifth of SIMULATED seconds, and of at least {@link #WARM_UP_WALL_MILLIS} of wall time
+ * (the steady state is the compiled one: a fifth of one robot's 20,000 s passes in a tenth of a second,
+ * while the optimizing compiler is still at work), the wall time the next SIMULATED seconds take; printed as
  * simulated seconds per wall second (and per CPU second of the Java threads, which a shared
  * machine disturbs less), with events per second.
  */
@@ -38,6 +40,8 @@ public final class ScaleArena {
      * takes seconds to reach the hot path.
      */
     private static final double WARM_UP_PART = 5.0;
+    /** The warm-up lasts at least this long: the compiler's optimized code is in place by then. */
+    private static final long WARM_UP_WALL_MILLIS = 2000;
     /** A measurement (or its warm-up) that takes longer than this stops there and reports what it got. */
     private static final long MAX_WALL_MILLIS = 300_000;
 
@@ -71,7 +75,9 @@ public final class ScaleArena {
                 return;
             }
             double warm = simulated / WARM_UP_PART;
+            long warmStart = System.currentTimeMillis();
             awaitSimTime(server, warm, MAX_WALL_MILLIS);
+            Thread.sleep(Math.max(0, WARM_UP_WALL_MILLIS - (System.currentTimeMillis() - warmStart)));
             double s0 = server.getSimulation().getSimTime();
             long e0 = ScaleWanderer.EVENTS.get();
             long c0 = cpuNanos();
