@@ -6,6 +6,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
@@ -23,11 +24,12 @@ import rp1.simulator.launch.RunningServer;
  * two builds' runs line by line up to a time. The clock is
  * counted from the moment all are placed. A crowd's cost changes as it moves (robots meet, press and
  * part), so the measure is over simulated time, the same stretch whatever the machine's speed: after
- * a warm-up of a fifth of SIMULATED seconds, and of at least {@link #WARM_UP_WALL_MILLIS} of wall time
- * (the steady state is the compiled one: a fifth of one robot's 20,000 s passes in a tenth of a second,
- * while the optimizing compiler is still at work), the wall time the next SIMULATED seconds take; printed as
+ * a warm-up of a fifth of SIMULATED seconds, the wall time the next SIMULATED seconds take; printed as
  * simulated seconds per wall second (and per CPU second of the Java threads, which a shared
- * machine disturbs less), with events per second.
+ * machine disturbs less), with events per second. The figure is the compiled steady state: before the
+ * measured world, the same world runs for {@link #COMPILER_WARM_UP_MILLIS} of wall time and is thrown
+ * away, so the optimizing compiler has done its work (a fifth of one robot's 20,000 simulated seconds
+ * passes in a tenth of a second, and measured the compiler as much as the simulator).
  */
 public final class ScaleArena {
     private static final double WALL = 0.1;
@@ -40,8 +42,8 @@ public final class ScaleArena {
      * takes seconds to reach the hot path.
      */
     private static final double WARM_UP_PART = 5.0;
-    /** The warm-up lasts at least this long: the compiler's optimized code is in place by then. */
-    private static final long WARM_UP_WALL_MILLIS = 2000;
+    /** How long a throwaway copy of the world runs first, so that the measured one runs compiled code. */
+    private static final long COMPILER_WARM_UP_MILLIS = 2000;
     /** A measurement (or its warm-up) that takes longer than this stops there and reports what it got. */
     private static final long MAX_WALL_MILLIS = 300_000;
 
@@ -60,24 +62,31 @@ public final class ScaleArena {
         for (int i = 0; i < robots; i++) {
             names.append(i == 0 ? "" : ",").append(ScaleWanderer.class.getName());
         }
-        long startup = System.nanoTime();
-        RunningServer server = BenchServer.start("floorPlanFileName=" + plan.toAbsolutePath(), "simulationSpeed=max",
-                "interlockEnabled=true", "dlcEnabled=true", names.toString(), "enableNetworkClients=false",
-                "connectTimeout=900", eventLog == null ? "" : "eventLogFileName=" + eventLog);
-        try {
-            long deadline = System.currentTimeMillis() + PLACEMENT_TIMEOUT_MILLIS;
-            while (ScaleWanderer.PLACED.get() < robots && System.currentTimeMillis() < deadline) {
-                Thread.sleep(5);
+        String[] properties = {"floorPlanFileName=" + plan.toAbsolutePath(), "simulationSpeed=max",
+            "interlockEnabled=true", "dlcEnabled=true", names.toString(), "enableNetworkClients=false",
+            "connectTimeout=900"};
+        if (eventLog == null) {
+            RunningServer warmUp = BenchServer.start(properties);
+            try {
+                awaitPlaced(robots);
+                Thread.sleep(COMPILER_WARM_UP_MILLIS);
+            } finally {
+                warmUp.stop();
+                ScaleWanderer.startAnew();
             }
+        }
+        long startup = System.nanoTime();
+        RunningServer server = BenchServer.start(eventLog == null ? properties
+                : append(properties, "eventLogFileName=" + eventLog));
+        try {
+            awaitPlaced(robots);
             double placing = (System.nanoTime() - startup) * 1e-9;
             if (eventLog != null) {
                 awaitSimTime(server, simulated, MAX_WALL_MILLIS);
                 return;
             }
             double warm = simulated / WARM_UP_PART;
-            long warmStart = System.currentTimeMillis();
             awaitSimTime(server, warm, MAX_WALL_MILLIS);
-            Thread.sleep(Math.max(0, WARM_UP_WALL_MILLIS - (System.currentTimeMillis() - warmStart)));
             double s0 = server.getSimulation().getSimTime();
             long e0 = ScaleWanderer.EVENTS.get();
             long c0 = cpuNanos();
@@ -102,6 +111,19 @@ public final class ScaleArena {
     }
 
     /** Waits until the simulation's clock reaches {@code time}, or for {@code maxMillis} at most. */
+    private static void awaitPlaced(int robots) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + PLACEMENT_TIMEOUT_MILLIS;
+        while (ScaleWanderer.PLACED.get() < robots && System.currentTimeMillis() < deadline) {
+            Thread.sleep(5);
+        }
+    }
+
+    private static String[] append(String[] properties, String more) {
+        String[] all = Arrays.copyOf(properties, properties.length + 1);
+        all[properties.length] = more;
+        return all;
+    }
+
     private static void awaitSimTime(RunningServer server, double time, long maxMillis) throws InterruptedException {
         long deadline = System.currentTimeMillis() + maxMillis;
         while (server.getSimulation().getSimTime() < time && System.currentTimeMillis() < deadline) {

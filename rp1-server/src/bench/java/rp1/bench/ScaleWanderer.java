@@ -51,6 +51,15 @@ public class ScaleWanderer extends RsClient {
     private boolean bumped;
     private boolean stalled;
 
+    /**
+     * The next wanderers made belong to a new world: they count from 0 again (placements {@code s0},
+     * {@code s1}, ..., and their random sources), and none is placed yet.
+     */
+    static void startAnew() {
+        CREATED.set(0);
+        PLACED.set(0);
+    }
+
     @Override
     public void initialize() throws IOException {
         super.initialize();
