@@ -32,6 +32,11 @@ final class RobotContacts {
      * otherwise be found one step late, when the robot can no longer stop a millisecond before it.
      */
     static final double LOOK_AHEAD = 0.002;
+    /**
+     * Slack, relative to the size of the coordinates, of the test that two robots' reach circles keep
+     * apart: far more than the rounding of a pose, so that outlines which could touch are always tested.
+     */
+    private static final double CIRCLES_SLACK = 1.0e-9;
     /** The contact time is narrowed down to this, seconds. */
     private static final double PRECISION = 1.0e-5;
     /**
@@ -193,7 +198,15 @@ final class RobotContacts {
     }
 
     private static boolean touch(Robot a, Robot b, double t) {
-        return outlinesAt(a, t).overlaps(outlinesAt(b, t));
+        RsTransform pa = a.motion().getPoseAtTime(t);
+        RsTransform pb = b.motion().getPoseAtTime(t);
+        // Every outline lies within its robot's reach of the body origin: circles that keep apart
+        // settle it without building either outline (most samples of a pair closing in).
+        double apart = Math.hypot(pa.m13 - pb.m13, pa.m23 - pb.m23) - a.shapes().reach() - b.shapes().reach();
+        if (apart > CIRCLES_SLACK * (1.0 + Math.abs(pa.m13) + Math.abs(pa.m23))) {
+            return false;
+        }
+        return a.shapes().outlinesAt(pa).overlaps(b.shapes().outlinesAt(pb));
     }
 
     private static Outlines outlinesAt(Robot r, double t) {
