@@ -12,7 +12,7 @@ from .body import (Body, BodyPart, Circle, ContactSensor, PaintSensor, Painter, 
                    _ids)
 from .errors import ProtocolError
 from .steering import AckermanSteering, Caster, DifferentialSteering, Wheel, WheelSystem
-from .wire import Reader, Writer, read_exactly
+from .wire import Reader, Writer, read_exactly, require_finite_fields
 
 _DIFFERENTIAL = 0
 _ACKERMAN = 1
@@ -20,15 +20,19 @@ _PLAIN_WHEEL = 0
 _CASTER = 1
 
 
-def encode_body(body: Body) -> bytes:
+def encode_body(body: Body, check_finite: bool = False) -> bytes:
     """The payload (everything after the header) of a body specification.
 
     Raises:
-        ValueError: if the body has no part the protocol can carry, or a name is too long.
+        ValueError: if the body has no part the protocol can carry, or a name is too long, or, with
+            ``check_finite``, if a dimension is NaN or infinite (naming the part and field).
     """
     w = Writer()
     write_body(w, body)
-    return w.getvalue()
+    payload = w.getvalue()
+    if check_finite and not w.finite:
+        require_finite_fields("body ", payload, read_body)
+    return payload
 
 
 def write_body(w: Writer, body: Body) -> None:

@@ -18,7 +18,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Type, T
 
 from . import codes, run
 from .body import Body, BodyPart, ContactSensor, PaintSensor, Painter, RangeSensor, Sensor, TargetSensor
-from .bodycodec import encode_body, read_body
+from .bodycodec import encode_body
 from .errors import ProtocolError
 from .events import (EVENT_TYPES, ContactSensorEvent, Event, PaintSensorEvent, RangeSensorEvent, SensorEvent,
                      TargetSensorEvent)
@@ -26,10 +26,10 @@ from .messages import HEADER, read_accept, read_event_message
 from .requests import (ActuatorControlRequest, EncoderStatusRequest, HaltRequest, HeartbeatRequest, MotionRequest,
                        PainterChangeRequest, PlacementRequest, PlanRequest, PositionRequest, Request,
                        SensorStatusRequest, SubscriptionRequest, TargetSelectionRequest, TimeoutRequest,
-                       encode_request, read_request)
+                       encode_request)
 from .settings import ClientSettings
 from .steering import Wheel
-from .wire import Reader, require_finite, require_finite_fields
+from .wire import Reader, require_finite
 
 log = logging.getLogger("rp1client")
 
@@ -312,9 +312,7 @@ class Client:
             ValueError: if the body has no part that can be sent, a name is too long, or a dimension
                 is NaN or infinite (the message names the part and field; nothing is sent).
         """
-        payload = encode_body(body)
-        require_finite_fields("body ", payload, read_body)
-        self._send(codes.BODY_SPECIFICATION, payload)
+        self._send(codes.BODY_SPECIFICATION, encode_body(body, check_finite=True))
 
     def send_request(self, request: Request) -> None:
         """Sends any request object as it is (the ``send_..._request`` methods build them).
@@ -323,9 +321,7 @@ class Client:
             ValueError: if a string is too long, or a number is NaN or infinite (the message names
                 the field, e.g. ``motion rotational velocity``; nothing is sent).
         """
-        payload = encode_request(request)
-        require_finite_fields("", payload, read_request)
-        self._send(codes.REQUEST, payload)
+        self._send(codes.REQUEST, encode_request(request, check_finite=True))
 
     def send_timeout_request(self, duration: float) -> int:
         """Asks for a timeout event after ``duration`` simulated seconds; returns its index

@@ -12,7 +12,7 @@ from typing import ClassVar, Dict, List, Optional, Tuple, Type
 
 from . import codes
 from .errors import ProtocolError
-from .wire import Color, Reader, Record, Writer, read_exactly
+from .wire import Color, Reader, Record, Writer, read_exactly, require_finite_fields
 
 _PREFIX = struct.Struct(">ii")
 
@@ -266,15 +266,19 @@ REQUEST_TYPES: Dict[int, Type[Request]] = {cls.code: cls for cls in (
     PainterChangeRequest, ActuatorControlRequest, EncoderStatusRequest)}
 
 
-def encode_request(request: Request) -> bytes:
+def encode_request(request: Request, check_finite: bool = False) -> bytes:
     """The bytes after the header of a REQUEST message: code, index 0, then the payload.
 
     Raises:
-        ValueError: if a string is too long for the wire.
+        ValueError: if a string is too long for the wire, or, with ``check_finite``, if a number
+            is NaN or infinite (naming the field, as the server would).
     """
     w = Writer().pack(_PREFIX, request.code, 0)
     request._write(w)
-    return w.getvalue()
+    payload = w.getvalue()
+    if check_finite and not w.finite:
+        require_finite_fields("", payload, read_request)
+    return payload
 
 
 def read_request(r: Reader) -> Request:

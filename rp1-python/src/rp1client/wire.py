@@ -230,12 +230,17 @@ class Reader:
 
 
 class Writer:
-    """Builds one message in memory, so nothing half-encoded can reach a stream."""
+    """Builds one message in memory, so nothing half-encoded can reach a stream.
 
-    __slots__ = ("data",)
+    ``finite`` stays true while every f64 written is a finite number: a message about to be sent is
+    only decoded again, to name the field, when it is false.
+    """
+
+    __slots__ = ("data", "finite")
 
     def __init__(self) -> None:
         self.data = bytearray()
+        self.finite = True
 
     def getvalue(self) -> bytes:
         return bytes(self.data)
@@ -250,6 +255,8 @@ class Writer:
 
     def f64(self, value: float) -> "Writer":
         self.data += _F64.pack(value)
+        if not math.isfinite(value):
+            self.finite = False
         return self
 
     def boolean(self, value: bool) -> "Writer":
@@ -322,11 +329,14 @@ class Record:
                 raise ValueError(f"unknown field kind {kind!r}")
         self.attributes = tuple(attr for _, attr, _ in fields)
         self._runs: List[Tuple[Optional[struct.Struct], Tuple[Tuple[str, str, str], ...]]] = []
+        #: Per run, the attributes of its f64 fields, whose finiteness :meth:`write` notes.
+        self._reals: List[Tuple[str, ...]] = []
         run: List[Tuple[str, str, str]] = []
         for f in fields:
             if f[0] == "s":
                 self._flush(run)
                 self._runs.append((None, (f,)))
+                self._reals.append(())
             else:
                 run.append(f)
         self._flush(run)
@@ -334,6 +344,7 @@ class Record:
     def _flush(self, run: List[Tuple[str, str, str]]) -> None:
         if run:
             self._runs.append((struct.Struct(">" + "".join(k for k, _, _ in run)), tuple(run)))
+            self._reals.append(tuple(attr for kind, attr, _ in run if kind == "d"))
             run.clear()
 
     def read(self, r: Reader) -> Dict[str, Any]:
@@ -355,8 +366,10 @@ class Record:
 
     def write(self, w: Writer, source: Any) -> None:
         """Writes the attributes of ``source`` in wire order."""
-        for layout, fields in self._runs:
+        for (layout, fields), reals in zip(self._runs, self._reals):
             if layout is None:
                 w.utf(getattr(source, fields[0][1]))
             else:
                 w.pack(layout, *(getattr(source, attr) for _, attr, _ in fields))
+                if w.finite and not all(math.isfinite(getattr(source, attr)) for attr in reals):
+                    w.finite = False
