@@ -26,9 +26,10 @@ final class HandlerRegistry {
     }
 
     synchronized void add(int code, int index, RsEventHandler handler) {
-        List<RsEventHandler> grown = new ArrayList<>(handlers.getOrDefault(EventKey.of(code, index), List.of()));
+        long key = EventKey.of(code, index);
+        List<RsEventHandler> grown = new ArrayList<>(handlers.getOrDefault(key, List.of()));
         grown.add(handler);
-        handlers.put(EventKey.of(code, index), Collections.unmodifiableList(grown));
+        handlers.put(key, Collections.unmodifiableList(grown));
     }
 
     /**
@@ -37,11 +38,12 @@ final class HandlerRegistry {
      * it subscribes again (protocol.md section 10).
      */
     synchronized void remove(int code, int index, RsEventHandler handler) {
-        List<RsEventHandler> list = handlers.get(EventKey.of(code, index));
+        long key = EventKey.of(code, index);
+        List<RsEventHandler> list = handlers.get(key);
         if (list != null) {
             List<RsEventHandler> kept = new ArrayList<>(list);
             kept.removeIf(handler::equals);
-            handlers.put(EventKey.of(code, index), Collections.unmodifiableList(kept));
+            handlers.put(key, Collections.unmodifiableList(kept));
         }
     }
 

@@ -27,17 +27,12 @@ final class RunFile {
         this.part = part;
     }
 
-    /** Where a file is written until it is finished: {@code NAME.part} beside it. */
-    static Path partOf(Path file) {
-        return WholeFiles.partOf(file);
-    }
-
     /**
      * Starts writing {@code file}: creates (or truncates) {@code NAME.part} and removes an older
      * {@code NAME}, which would otherwise pass for this run's if the run never finished.
      */
     static RunFile create(Path file) throws IOException {
-        Path part = partOf(file);
+        Path part = WholeFiles.partOf(file);
         OutputStream out = new BufferedOutputStream(Files.newOutputStream(part), BUFFER);
         try {
             Files.deleteIfExists(file);

@@ -177,11 +177,19 @@ final class RobotContacts {
     private static double gap(Robot a, Robot b, double t) {
         RsTransform pa = a.motion().getPoseAtTime(t);
         RsTransform pb = b.motion().getPoseAtTime(t);
-        double circles = Math.hypot(pa.m13 - pb.m13, pa.m23 - pb.m23) - a.shapes().reach() - b.shapes().reach();
+        double circles = circlesGap(a, pa, b, pb);
         if (circles > SAMPLE_SPACING) {
             return circles;
         }
         return a.shapes().outlinesAt(pa).distance(b.shapes().outlinesAt(pb));
+    }
+
+    /**
+     * How far apart the circles of the two robots' reach are at poses {@code pa} and {@code pb}
+     * (negative if they overlap): every outline lies within its robot's reach of the body origin.
+     */
+    private static double circlesGap(Robot a, RsTransform pa, Robot b, RsTransform pb) {
+        return Math.hypot(pa.m13 - pb.m13, pa.m23 - pb.m23) - a.shapes().reach() - b.shapes().reach();
     }
 
     /** The first touching time in (clear, touching], to {@link #PRECISION}. */
@@ -200,10 +208,9 @@ final class RobotContacts {
     private static boolean touch(Robot a, Robot b, double t) {
         RsTransform pa = a.motion().getPoseAtTime(t);
         RsTransform pb = b.motion().getPoseAtTime(t);
-        // Every outline lies within its robot's reach of the body origin: circles that keep apart
-        // settle it without building either outline (most samples of a pair closing in).
-        double apart = Math.hypot(pa.m13 - pb.m13, pa.m23 - pb.m23) - a.shapes().reach() - b.shapes().reach();
-        if (apart > CIRCLES_SLACK * (1.0 + Math.abs(pa.m13) + Math.abs(pa.m23))) {
+        // Circles that keep apart settle it without building either outline (most samples of a pair
+        // closing in).
+        if (circlesGap(a, pa, b, pb) > CIRCLES_SLACK * (1.0 + Math.abs(pa.m13) + Math.abs(pa.m23))) {
             return false;
         }
         return a.shapes().outlinesAt(pa).overlaps(b.shapes().outlinesAt(pb));
