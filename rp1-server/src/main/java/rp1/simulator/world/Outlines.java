@@ -5,7 +5,9 @@ import rp1.rossum.RsTransform;
 /**
  * A robot's interactive shapes placed at one pose, as plain coordinate arrays with a bounding box per
  * polygon: what the robot-against-robot tests work on, many times per step in a crowd. Polygons are
- * closed implicitly (the last vertex joins the first). Touching counts as overlapping.
+ * closed implicitly (the last vertex joins the first). Touching counts as overlapping. A robot keeps
+ * one and places it anew at each pose it is asked for ({@link #place}), so that a sample allocates
+ * nothing.
  */
 final class Outlines {
     private final double[][] xs;
@@ -19,8 +21,12 @@ final class Outlines {
      * until a distance needs it (most outlines are only tested for overlap).
      */
     private final double[] radius;
+    /** The edges of one polygon that {@link #edgesTouch} keeps, by index; long enough for any polygon of this. */
+    private final int[] near;
 
-    private Outlines(int n) {
+    /** Room for {@code outlines} (each x0, y0, x1, y1, ... in body coordinates), not yet placed. */
+    private Outlines(double[][] outlines) {
+        int n = outlines.length;
         xs = new double[n][];
         ys = new double[n][];
         minX = new double[n];
@@ -28,16 +34,30 @@ final class Outlines {
         maxX = new double[n];
         maxY = new double[n];
         radius = new double[n];
+        int most = 0;
+        for (int i = 0; i < n; i++) {
+            xs[i] = new double[outlines[i].length / 2];
+            ys[i] = new double[outlines[i].length / 2];
+            most = Math.max(most, xs[i].length);
+        }
+        near = new int[most];
     }
 
     /** {@code outlines} (each x0, y0, x1, y1, ... in body coordinates) placed at {@code pose}. */
     static Outlines at(double[][] outlines, RsTransform pose) {
-        Outlines o = new Outlines(outlines.length);
+        return new Outlines(outlines).place(outlines, pose);
+    }
+
+    /**
+     * Places these outlines anew: {@code outlines} must be what this was made from. Returns this,
+     * which no longer answers for the pose it had.
+     */
+    Outlines place(double[][] outlines, RsTransform pose) {
         for (int i = 0; i < outlines.length; i++) {
             double[] xy = outlines[i];
             int n = xy.length / 2;
-            double[] x = new double[n];
-            double[] y = new double[n];
+            double[] x = xs[i];
+            double[] y = ys[i];
             double x0 = Double.POSITIVE_INFINITY;
             double y0 = Double.POSITIVE_INFINITY;
             double x1 = Double.NEGATIVE_INFINITY;
@@ -52,15 +72,13 @@ final class Outlines {
                 x1 = Math.max(x1, x[k]);
                 y1 = Math.max(y1, y[k]);
             }
-            o.xs[i] = x;
-            o.ys[i] = y;
-            o.minX[i] = x0;
-            o.minY[i] = y0;
-            o.maxX[i] = x1;
-            o.maxY[i] = y1;
-            o.radius[i] = Double.NaN;
+            minX[i] = x0;
+            minY[i] = y0;
+            maxX[i] = x1;
+            maxY[i] = y1;
+            radius[i] = Double.NaN;
         }
-        return o;
+        return this;
     }
 
     /** Whether any polygon of this overlaps or touches any polygon of {@code other}. */
@@ -77,16 +95,28 @@ final class Outlines {
 
     /** The distance between the nearest polygons of this and {@code other}, metres; 0 if they overlap. */
     double distance(Outlines other) {
+        return distance(other, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * The distance between the nearest polygons of this and {@code other} if it is at most {@code limit}
+     * (bit for bit what {@link #distance(Outlines)} gives), else a value above {@code limit}: polygons
+     * and vertex-edge pairs that cannot come within the limit are not looked at, which is most of them
+     * when the question is only whether two robots touch.
+     */
+    double distance(Outlines other, double limit) {
+        double beyond = limit + Nearest.SLACK;
         double best = Double.POSITIVE_INFINITY;
         for (int i = 0; i < xs.length; i++) {
             for (int j = 0; j < other.xs.length; j++) {
-                if (boxGap(i, other, j) >= best) {
+                double boxes = boxGap(i, other, j);
+                if (boxes >= best || boxes > beyond) {
                     continue;
                 }
                 if (polygonsOverlap(i, other, j)) {
                     return 0.0;
                 }
-                best = Math.min(best, Math.sqrt(squaredDistance(i, other, j, best)));
+                best = Math.min(best, Math.sqrt(squaredDistance(i, other, j, Math.min(best, limit))));
             }
         }
         return best;
@@ -101,8 +131,12 @@ final class Outlines {
 
     /** Whether polygon i of this and polygon j of {@code o} overlap or touch. */
     private boolean polygonsOverlap(int i, Outlines o, int j) {
-        return edgesTouch(xs[i], ys[i], o.xs[j], o.ys[j], o.minX[j], o.minY[j], o.maxX[j], o.maxY[j], minX[i], minY[i],
-                maxX[i], maxY[i])
+        // Where edges of the two can meet: in both boxes.
+        double x0 = Math.max(minX[i], o.minX[j]);
+        double y0 = Math.max(minY[i], o.minY[j]);
+        double x1 = Math.min(maxX[i], o.maxX[j]);
+        double y1 = Math.min(maxY[i], o.maxY[j]);
+        return edgesTouch(xs[i], ys[i], o.xs[j], o.ys[j], x0, y0, x1, y1, o.near)
                 || (o.inBox(j, xs[i][0], ys[i][0]) && contains(o.xs[j], o.ys[j], xs[i][0], ys[i][0]))
                 || (inBox(i, o.xs[j][0], o.ys[j][0]) && contains(xs[i], ys[i], o.xs[j][0], o.ys[j][0]));
     }
@@ -112,20 +146,22 @@ final class Outlines {
     }
 
     /**
-     * Whether an edge of polygon a touches an edge of polygon b (whose boxes are [bx0, bx1] x [by0, by1]
-     * and [ax0, ax1] x [ay0, ay1]). An edge whose box misses the other polygon's box is passed over: it
-     * would fail {@link #segmentsTouch}'s own box test against every edge of that polygon.
+     * Whether an edge of polygon a touches an edge of polygon b, where [x0, x1] x [y0, y1] is where the
+     * polygons' boxes meet. An edge whose box misses that box is passed over: two edges that touch have
+     * boxes that meet, inside both polygons' boxes, so {@link #segmentsTouch} would turn it down against
+     * every edge of the other. {@code near} has room for b's edges.
      */
-    private static boolean edgesTouch(double[] ax, double[] ay, double[] bx, double[] by, double bx0, double by0,
-                                      double bx1, double by1, double ax0, double ay0, double ax1, double ay1) {
+    private static boolean edgesTouch(double[] ax, double[] ay, double[] bx, double[] by, double x0, double y0,
+                                      double x1, double y1, int[] near) {
+        if (x1 < x0 || y1 < y0) {
+            return false;
+        }
         int na = ax.length;
         int nb = bx.length;
-        int[] near = new int[nb];
         int m = 0;
         for (int j = 0; j < nb; j++) {
             int j1 = j + 1 == nb ? 0 : j + 1;
-            if (!(Math.max(bx[j], bx[j1]) < ax0 || ax1 < Math.min(bx[j], bx[j1])
-                    || Math.max(by[j], by[j1]) < ay0 || ay1 < Math.min(by[j], by[j1]))) {
+            if (!edgeMisses(bx[j], by[j], bx[j1], by[j1], x0, y0, x1, y1)) {
                 near[m++] = j;
             }
         }
@@ -134,8 +170,7 @@ final class Outlines {
         }
         for (int i = 0; i < na; i++) {
             int i1 = i + 1 == na ? 0 : i + 1;
-            if (Math.max(ax[i], ax[i1]) < bx0 || bx1 < Math.min(ax[i], ax[i1])
-                    || Math.max(ay[i], ay[i1]) < by0 || by1 < Math.min(ay[i], ay[i1])) {
+            if (edgeMisses(ax[i], ay[i], ax[i1], ay[i1], x0, y0, x1, y1)) {
                 continue;
             }
             for (int k = 0; k < m; k++) {
@@ -147,6 +182,15 @@ final class Outlines {
             }
         }
         return false;
+    }
+
+    /**
+     * Whether the box of the edge (px, py)-(qx, qy) misses the box [x0, x1] x [y0, y1]: both ends on the
+     * far side of one of its sides (the same as comparing the edge's least and greatest coordinates).
+     */
+    private static boolean edgeMisses(double px, double py, double qx, double qy, double x0, double y0, double x1,
+                                      double y1) {
+        return (px < x0 && qx < x0) || (px > x1 && qx > x1) || (py < y0 && qy < y0) || (py > y1 && qy > y1);
     }
 
     /** Whether segments p and q share a point (end points included; collinear overlap counts). */
@@ -216,7 +260,7 @@ final class Outlines {
          * Slack on the pruning bound, metres: far above the rounding of any coordinate the simulator
          * handles, so that no pair whose computed distance could win is skipped.
          */
-        private static final double SLACK = 1.0e-9;
+        static final double SLACK = 1.0e-9;
         private final double limit;
         double best = Double.POSITIVE_INFINITY;
         private double bound;

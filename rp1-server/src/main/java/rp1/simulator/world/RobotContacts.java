@@ -181,7 +181,12 @@ final class RobotContacts {
         if (circles > SAMPLE_SPACING) {
             return circles;
         }
-        return a.shapes().outlinesAt(pa).distance(b.shapes().outlinesAt(pb));
+        // Within the sampling spacing only whether they touch matters, and a search bounded by it is
+        // cheap; beyond it the search needs the exact distance to jump by.
+        Outlines outlinesA = a.shapes().outlinesAt(pa);
+        Outlines outlinesB = b.shapes().outlinesAt(pb);
+        double near = outlinesA.distance(outlinesB, SAMPLE_SPACING);
+        return near <= SAMPLE_SPACING ? near : outlinesA.distance(outlinesB);
     }
 
     /**
@@ -256,12 +261,10 @@ final class RobotContacts {
         Outlines otherShapes = outlinesAt(other, contact);
         RsTransform pose = r.motion().getPoseAtTime(contact);
         List<RsBodyContactSensor> touching = new ArrayList<>();
-        for (RsBodySensor s : r.getBody().getBodySensorArray()) {
-            if (s instanceof RsBodyContactSensor) {
-                Outlines sensor = Outlines.at(new double[][] {((RsBodyContactSensor) s).getOutlineVertices()}, pose);
-                if (sensor.distance(otherShapes) <= TOUCHING) {
-                    touching.add((RsBodyContactSensor) s);
-                }
+        RobotShapes.ContactSensors sensors = r.shapes().contactSensors();
+        for (int i = 0; i < sensors.count(); i++) {
+            if (sensors.outlinesAt(i, pose).distance(otherShapes, TOUCHING) <= TOUCHING) {
+                touching.add(sensors.sensor(i));
             }
         }
         return touching;

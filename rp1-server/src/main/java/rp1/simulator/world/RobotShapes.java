@@ -3,6 +3,8 @@ package rp1.simulator.world;
 import java.util.Arrays;
 
 import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyContactSensor;
+import rp1.rossum.RsBodySensor;
 import rp1.rossum.RsBodyShape;
 import rp1.rossum.RsTransform;
 import rp1.rossum.RsWall;
@@ -22,8 +24,12 @@ final class RobotShapes {
     /** The last pose {@link #outlinesAt} was asked for, and its answer. */
     private final LastPose outlinesPose = new LastPose();
     private Outlines placed;
+    private final RsBody body;
+    /** Made when a contact first asks for them. */
+    private ContactSensors contactSensors;
 
     RobotShapes(RsBody body) {
+        this.body = body;
         RsBodyShape[] shapes = body.getInteractiveBodyShapeArray();
         outlines = new double[shapes.length][];
         double r = 0.0;
@@ -74,14 +80,70 @@ final class RobotShapes {
     /**
      * The shapes placed at {@code pose}. The contact search asks for a robot's outlines at every sample
      * of every pair it is in, and a robot at rest is always at the same pose, so the answer for the last
-     * pose is kept (outlines are never changed once made).
+     * pose is kept. It is one object, placed anew for another pose: valid until the next call.
      */
     Outlines outlinesAt(RsTransform pose) {
-        if (placed == null || !outlinesPose.is(pose)) {
+        if (placed == null) {
             placed = Outlines.at(outlines, pose);
+            outlinesPose.set(pose);
+        } else if (!outlinesPose.is(pose)) {
+            placed.place(outlines, pose);
             outlinesPose.set(pose);
         }
         return placed;
+    }
+
+    /** The body's contact sensors, in the body's order, with their outlines ready to place. */
+    ContactSensors contactSensors() {
+        if (contactSensors == null) {
+            contactSensors = new ContactSensors(body);
+        }
+        return contactSensors;
+    }
+
+    /**
+     * A body's contact sensors and an outline of each to place at a pose: which of them touch another
+     * robot is asked at every contact between robots.
+     */
+    static final class ContactSensors {
+        private final RsBodyContactSensor[] sensors;
+        private final double[][][] vertices;
+        private final Outlines[] placed;
+
+        private ContactSensors(RsBody body) {
+            int n = 0;
+            RsBodySensor[] all = body.getBodySensorArray();
+            RsBodyContactSensor[] found = new RsBodyContactSensor[all.length];
+            for (RsBodySensor s : all) {
+                if (s instanceof RsBodyContactSensor) {
+                    found[n++] = (RsBodyContactSensor) s;
+                }
+            }
+            sensors = Arrays.copyOf(found, n);
+            vertices = new double[n][][];
+            placed = new Outlines[n];
+            for (int i = 0; i < n; i++) {
+                vertices[i] = new double[][] {sensors[i].getOutlineVertices()};
+            }
+        }
+
+        int count() {
+            return sensors.length;
+        }
+
+        RsBodyContactSensor sensor(int i) {
+            return sensors[i];
+        }
+
+        /** Sensor {@code i}'s outline at {@code pose}: one object per sensor, valid until the next call. */
+        Outlines outlinesAt(int i, RsTransform pose) {
+            if (placed[i] == null) {
+                placed[i] = Outlines.at(vertices[i], pose);
+            } else {
+                placed[i].place(vertices[i], pose);
+            }
+            return placed[i];
+        }
     }
 
     private static double[] map(double[] outline, RsTransform pose) {

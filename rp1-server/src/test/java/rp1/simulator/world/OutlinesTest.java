@@ -27,7 +27,11 @@ class OutlinesTest {
         double[][] robot = outlines(roundRobot());
         double[][] box = outlines(boxRobot());
         Random random = new Random(11);
+        // Placed anew at every pair, as a robot's outlines are at every sample.
+        Outlines reusedRobot = Outlines.at(robot, new RsTransform());
+        Outlines reusedBox = Outlines.at(box, new RsTransform());
         int overlapping = 0;
+        int within = 0;
         for (int i = 0; i < PAIRS; i++) {
             double[][] a = i % 3 == 0 ? box : robot;
             double[][] b = i % 5 == 0 ? box : robot;
@@ -35,6 +39,8 @@ class OutlinesTest {
             double d = 0.15 + 0.2 * random.nextDouble();
             if (i % 7 == 0) {
                 d = 0.2 + 1e-9 * random.nextDouble();
+            } else if (i % 11 == 0) {
+                d = 0.2 + 0.006 * random.nextDouble();
             }
             double heading = angle(random);
             RsTransform pb = new RsTransform(angle(random), pa.m13 + d * Math.cos(heading), pa.m23 + d * Math.sin(heading));
@@ -45,8 +51,22 @@ class OutlinesTest {
             assertEquals(overlap, oa.overlaps(ob), "overlap of pair " + i);
             double expected = overlap ? 0.0 : Math.sqrt(bruteSquaredDistance(a, pa, b, pb));
             assertEquals(Double.doubleToLongBits(expected), Double.doubleToLongBits(oa.distance(ob)), "distance of pair " + i);
+            Outlines ra = (a == box ? reusedBox : reusedRobot).place(a, pa);
+            Outlines rb = b == a ? Outlines.at(b, pb) : (b == box ? reusedBox : reusedRobot).place(b, pb);
+            assertEquals(overlap, ra.overlaps(rb), "overlap of pair " + i + ", placed anew");
+            for (double limit : new double[] {1e-3, 5e-3, 0.05}) {
+                double bounded = ra.distance(rb, limit);
+                if (expected <= limit) {
+                    within++;
+                    assertEquals(Double.doubleToLongBits(expected), Double.doubleToLongBits(bounded),
+                            "distance within " + limit + " of pair " + i);
+                } else {
+                    assertTrue(bounded > limit, "beyond " + limit + " for pair " + i + ": " + bounded);
+                }
+            }
         }
         assertTrue(overlapping > PAIRS / 10 && overlapping < PAIRS * 9 / 10, "both cases are tried: " + overlapping);
+        assertTrue(within > 3 * overlapping + PAIRS / 50, "distances within the limits are tried: " + within);
     }
 
     private static double angle(Random random) {
