@@ -1,0 +1,66 @@
+package rp1.rossum;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+import rp1.rossum.event.RsEvent;
+import rp1.rossum.event.RsEventHandler;
+import rp1.rossum.event.RsHeartbeatEventHandler;
+
+/** Handlers by (code, index), for the keys kept in arrays and for those kept in the map alike. */
+class HandlerRegistryTest {
+    private final HandlerRegistry registry = new HandlerRegistry();
+    private final RsEventHandler first = (RsHeartbeatEventHandler) e -> { };
+    private final RsEventHandler second = (RsHeartbeatEventHandler) e -> { };
+
+    /** A heartbeat (index 0), a sensor of a small id, and keys beyond the arrays: a large, a negative id, an unknown code. */
+    private static final int[][] KEYS = {
+        {RsEvent.EVT_HEARTBEAT, 0}, {RsEvent.EVT_RANGE_SENSOR, 3}, {RsEvent.EVT_RANGE_SENSOR, 1000},
+        {RsEvent.EVT_CONTACT_SENSOR, -1}, {99, 0}, {-5, 2},
+    };
+
+    @Test
+    void handlersAreKeptInRegistrationOrderForEveryKindOfKey() {
+        for (int[] k : KEYS) {
+            assertFalse(registry.has(k[0], k[1]));
+            assertEquals(List.of(), registry.snapshot(k[0], k[1]));
+            registry.add(k[0], k[1], first);
+            registry.add(k[0], k[1], second);
+            assertTrue(registry.has(k[0], k[1]));
+            assertEquals(List.of(first, second), registry.snapshot(k[0], k[1]));
+        }
+        assertEquals(List.of(), registry.snapshot(RsEvent.EVT_RANGE_SENSOR, 4), "a neighbouring id has none");
+        assertEquals(List.of(), registry.snapshot(RsEvent.EVT_TARGET_SENSOR, 3), "nor another code at the same id");
+    }
+
+    @Test
+    void removingAHandlerRemovesEveryRegistrationOfItAndLeavesTheKeyEmpty() {
+        for (int[] k : KEYS) {
+            registry.add(k[0], k[1], first);
+            registry.add(k[0], k[1], second);
+            registry.add(k[0], k[1], first);
+            registry.remove(k[0], k[1], first);
+            assertEquals(List.of(second), registry.snapshot(k[0], k[1]));
+            registry.remove(k[0], k[1], second);
+            assertFalse(registry.has(k[0], k[1]));
+            registry.add(k[0], k[1], second);
+            registry.removeAll(k[0], k[1]);
+            assertFalse(registry.has(k[0], k[1]));
+            assertEquals(List.of(), registry.snapshot(k[0], k[1]));
+        }
+    }
+
+    @Test
+    void aSnapshotIsNotChangedByLaterRegistrations() {
+        registry.add(RsEvent.EVT_HEARTBEAT, 0, first);
+        List<RsEventHandler> before = registry.snapshot(RsEvent.EVT_HEARTBEAT, 0);
+        registry.add(RsEvent.EVT_HEARTBEAT, 0, second);
+        registry.removeAll(RsEvent.EVT_HEARTBEAT, 0);
+        assertEquals(List.of(first), before);
+    }
+}
