@@ -1,9 +1,7 @@
 package rp1.simulator.world;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
-import java.util.PriorityQueue;
 import java.util.function.DoubleConsumer;
 
 import rp1.rossum.RsPlan;
@@ -35,10 +33,8 @@ final class MotionStepper implements Task {
     private final DoubleConsumer changed;
     /** Runs of this task so far: the order in which motions started and searches were made. */
     private long runs;
-    /** By robot number: when the robot is next evaluated (NaN: not due). */
-    private double[] nextEvaluation = new double[0];
-    /** The robots due, earliest first, then in joining order. */
-    private final PriorityQueue<Robot> due = new PriorityQueue<>(this::compareDue);
+    /** The robots due for evaluation. */
+    private final DueRobots due = new DueRobots();
     private TaskHandle queued = TaskHandle.NONE;
     private double queuedTime = Double.NaN;
 
@@ -58,41 +54,12 @@ final class MotionStepper implements Task {
         this.changed = changed;
     }
 
-    private int compareDue(Robot a, Robot b) {
-        int byTime = Double.compare(nextEvaluation[a.getNumber()], nextEvaluation[b.getNumber()]);
-        return byTime != 0 ? byTime : Integer.compare(a.getNumber(), b.getNumber());
-    }
-
-    private boolean isDue(Robot r) {
-        int n = r.getNumber();
-        return n < nextEvaluation.length && !Double.isNaN(nextEvaluation[n]);
-    }
-
-    private double nextEvaluation(Robot r) {
-        return nextEvaluation[r.getNumber()];
-    }
-
-    private void setNextEvaluation(Robot r, double time) {
-        int n = r.getNumber();
-        if (n >= nextEvaluation.length) {
-            int old = nextEvaluation.length;
-            nextEvaluation = Arrays.copyOf(nextEvaluation, Math.max(n + 1, 2 * old));
-            Arrays.fill(nextEvaluation, old, nextEvaluation.length, Double.NaN);
-        }
-        nextEvaluation[n] = time;
-    }
-
     /** The robot is evaluated at {@code time}, or earlier if it already is due earlier. */
     void evaluateBy(Robot r, double time) {
-        boolean isDue = isDue(r);
-        if (isDue && nextEvaluation(r) <= time) {
+        if (due.isDue(r) && due.dueTime(r) <= time) {
             return;
         }
-        if (isDue) {
-            due.remove(r);
-        }
-        setNextEvaluation(r, time);
-        due.add(r);
+        due.put(r, time);
         requeue();
     }
 
@@ -101,16 +68,15 @@ final class MotionStepper implements Task {
      * time (a moving robot starts the new motion at its next step, as in RP1 0.60).
      */
     void wake(Robot r, double time) {
-        if (!isDue(r)) {
+        if (!due.isDue(r)) {
             evaluateBy(r, time);
         }
     }
 
     /** The robot leaves: no more evaluations. */
     void forget(Robot r) {
-        if (isDue(r)) {
+        if (due.isDue(r)) {
             due.remove(r);
-            setNextEvaluation(r, Double.NaN);
             requeue();
         }
     }
@@ -121,7 +87,7 @@ final class MotionStepper implements Task {
             queued.cancel();
             return;
         }
-        double first = nextEvaluation(due.peek());
+        double first = due.first();
         if (queued.isScheduled() && queuedTime == first) {
             return;
         }
@@ -134,11 +100,7 @@ final class MotionStepper implements Task {
     public void run(double time) {
         runs++;
         List<Robot> group = new ArrayList<>();
-        while (!due.isEmpty() && nextEvaluation(due.peek()) <= time) {
-            Robot r = due.poll();
-            setNextEvaluation(r, Double.NaN);
-            group.add(r);
-        }
+        due.takeDueBy(time, group);
         List<Robot> active = new ArrayList<>();
         for (Robot r : group) {
             if (r.needsProcessing()) {
