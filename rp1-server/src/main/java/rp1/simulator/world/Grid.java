@@ -163,10 +163,42 @@ final class Grid {
         int r0 = row(Math.min(y0, y1) - radius);
         int r1 = row(Math.max(y0, y1) + radius);
         double reach = radius + cell * Math.sqrt(0.5);
+        // A long segment's box covers a great many cells that are nowhere near it (a drive "for ever"
+        // crosses the whole plan): each row looks only at the columns near the part of the segment
+        // within reach of the row, a cell wider on every side than rounding could ever need, and the
+        // test below decides as before.
+        double wide = reach + cell;
         for (int r = r0; r <= r1; r++) {
-            for (int c = c0; c <= c1; c++) {
+            double cy = minY + (r + 0.5) * cell;
+            int from = c0;
+            int to = c1;
+            double lo;
+            double hi;
+            if (y0 == y1) {
+                if (Math.abs(y0 - cy) > wide) {
+                    continue;
+                }
+                lo = Math.min(x0, x1);
+                hi = Math.max(x0, x1);
+            } else {
+                double ta = (cy - wide - y0) / (y1 - y0);
+                double tb = (cy + wide - y0) / (y1 - y0);
+                double t0 = Math.max(0.0, Math.min(ta, tb));
+                double t1 = Math.min(1.0, Math.max(ta, tb));
+                if (t0 > t1) {
+                    continue;
+                }
+                double xa = x0 + t0 * (x1 - x0);
+                double xb = x0 + t1 * (x1 - x0);
+                lo = Math.min(xa, xb);
+                hi = Math.max(xa, xb);
+            }
+            if (Double.isFinite(lo - wide) && Double.isFinite(hi + wide)) {
+                from = Math.max(c0, col(lo - wide));
+                to = Math.min(c1, col(hi + wide));
+            }
+            for (int c = from; c <= to; c++) {
                 double cx = minX + (c + 0.5) * cell;
-                double cy = minY + (r + 0.5) * cell;
                 if (Outlines.squaredToSegment(cx, cy, x0, y0, x1, y1) <= reach * reach) {
                     visitCell(r * cols + c, mark, visitor);
                 }

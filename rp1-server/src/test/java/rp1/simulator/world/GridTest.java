@@ -27,6 +27,67 @@ class GridTest {
         return found;
     }
 
+    /**
+     * Along a segment, the cells visited are those whose centre is within the radius and half a cell's
+     * diagonal of it, among the cells of its box grown by the radius, however long it is (a drive "for
+     * ever" reaches far beyond the plan): the same as trying every cell of the box, which this does.
+     */
+    @Test
+    void aSegmentFindsWhatTryingEveryCellOfItsBoxFinds() {
+        double side = 50.0;
+        Grid grid = new Grid(new RsRectangle(0, 0, side, side), 1.0, MAX_CELLS);
+        java.util.Random random = new java.util.Random(5);
+        List<double[]> boxes = new ArrayList<>();
+        for (int id = 0; id < 400; id++) {
+            double x = side * random.nextDouble();
+            double y = side * random.nextDouble();
+            double w = 0.05 + 0.6 * random.nextDouble();
+            boxes.add(new double[] {x, y, x + w, y + w});
+            grid.insert(id, x, y, x + w, y + w);
+        }
+        for (int i = 0; i < 2_000; i++) {
+            double x0 = side * random.nextDouble();
+            double y0 = side * random.nextDouble();
+            double heading = 2 * Math.PI * random.nextDouble();
+            double length = i % 4 == 0 ? 1e6 : i % 4 == 1 ? 3 * random.nextDouble() : side * random.nextDouble();
+            double x1 = i % 10 == 0 ? x0 + length : x0 + length * Math.cos(heading);
+            double y1 = i % 10 == 0 ? y0 : y0 + length * Math.sin(heading);
+            double radius = i % 3 == 0 ? 0.0 : 0.7 * random.nextDouble();
+            List<Integer> found = alongSegment(grid, x0, y0, x1, y1, radius);
+            found.sort(null);
+            assertEquals(everyCellOfTheBox(boxes, side, x0, y0, x1, y1, radius), found, "segment " + i);
+        }
+    }
+
+    /** The items in the cells (1 m, from 0 to side) that the box test admits, trying every cell of the box. */
+    private static List<Integer> everyCellOfTheBox(List<double[]> boxes, double side, double x0, double y0, double x1,
+                                                   double y1, double radius) {
+        int cells = (int) side;
+        int c0 = clamp(Math.floor(Math.min(x0, x1) - radius), cells);
+        int c1 = clamp(Math.floor(Math.max(x0, x1) + radius), cells);
+        int r0 = clamp(Math.floor(Math.min(y0, y1) - radius), cells);
+        int r1 = clamp(Math.floor(Math.max(y0, y1) + radius), cells);
+        double reach = radius + Math.sqrt(0.5);
+        List<Integer> found = new ArrayList<>();
+        for (int id = 0; id < boxes.size(); id++) {
+            double[] b = boxes.get(id);
+            boolean hit = false;
+            for (int r = Math.max(r0, clamp(Math.floor(b[1]), cells)); r <= Math.min(r1, clamp(Math.floor(b[3]), cells)); r++) {
+                for (int c = Math.max(c0, clamp(Math.floor(b[0]), cells)); c <= Math.min(c1, clamp(Math.floor(b[2]), cells)); c++) {
+                    hit |= Outlines.squaredToSegment(c + 0.5, r + 0.5, x0, y0, x1, y1) <= reach * reach;
+                }
+            }
+            if (hit) {
+                found.add(id);
+            }
+        }
+        return found;
+    }
+
+    private static int clamp(double cell, int cells) {
+        return (int) Math.max(0, Math.min(cells - 1, cell));
+    }
+
     @Test
     void aLongThinAreaOfHugeExtentGetsLargerCellsInsteadOfAnArrayTooLargeForTheVm() {
         Grid grid = new Grid(new RsRectangle(0, 0, 1e300, 3), 1.0, MAX_CELLS);
