@@ -24,6 +24,49 @@ class CollisionTest {
         return plan;
     }
 
+    /**
+     * Walls are tried nearest first, so that the contact found lets the others be passed over: the
+     * contact time is still the least over every wall alone, whatever order the walls come in.
+     */
+    @Test
+    void aMotionStopsAtTheEarliestWallWhateverOrderTheWallsComeIn() {
+        java.util.Random random = new java.util.Random(3);
+        int contacts = 0;
+        for (int i = 0; i < 400; i++) {
+            RsWall[] walls = new RsWall[2 + random.nextInt(8)];
+            for (int w = 0; w < walls.length; w++) {
+                double x = (random.nextDouble() - 0.5) * 16;
+                double y = (random.nextDouble() - 0.5) * 16;
+                walls[w] = new RsWall("w" + w, null);
+                walls[w].setGeometry(TestPlans.rect(x, y, x + 0.05 + 3 * random.nextDouble(), y + 0.05 + random.nextDouble()));
+            }
+            RsMotionRequest request = random.nextBoolean()
+                    ? new RsMotionRequest(1.0, 0.0, 20.0) : new RsMotionRequest(0.5, 0.3, 20.0);
+            double heading = 2 * Math.PI * random.nextDouble();
+            double earliest = Double.POSITIVE_INFINITY;
+            for (RsWall w : walls) {
+                RsBody alone = roundRobot(0.2);
+                alone.place(0.0, 0.0, 0.0, heading);
+                alone.computeMotion(0.0, request, new RsWall[] {w});
+                if (alone.motion.collision) {
+                    earliest = Math.min(earliest, alone.motion.collisionTime);
+                }
+            }
+            for (int shuffle = 0; shuffle < 3; shuffle++) {
+                java.util.Collections.shuffle(java.util.Arrays.asList(walls), random);
+                RsBody b = roundRobot(0.2);
+                b.place(0.0, 0.0, 0.0, heading);
+                b.computeMotion(0.0, request, walls);
+                assertEquals(Double.isFinite(earliest), b.motion.collision, "case " + i);
+                if (b.motion.collision) {
+                    assertEquals(earliest, b.motion.collisionTime, 0.0, "case " + i);
+                }
+            }
+            contacts += Double.isFinite(earliest) ? 1 : 0;
+        }
+        assertTrue(contacts > 100 && contacts < 380, contacts + " of 400 motions meet a wall");
+    }
+
     @Test
     void backingFrom95CentimetresClearanceStopsOneMillisecondBeforeContact() {
         RsBody b = roundRobot(0.15);
