@@ -56,7 +56,10 @@ public final class Heartbeats implements Task {
         queued = TaskHandle.NONE;
         List<Beat> now = new ArrayList<>();
         while (!due.isEmpty() && due.firstKey() <= time) {
-            now.addAll(due.pollFirstEntry().getValue().inOrder());
+            for (Beat b : due.pollFirstEntry().getValue().inOrder()) {
+                b.filedIn = null;
+                now.add(b);
+            }
         }
         for (Beat b : now) {
             if (!b.stopped) {
@@ -72,17 +75,18 @@ public final class Heartbeats implements Task {
     }
 
     private void file(Beat b) {
-        due.computeIfAbsent(b.next, t -> new DueTogether()).add(b);
+        DueTogether together = due.computeIfAbsent(b.next, t -> new DueTogether());
+        together.add(b);
+        b.filedIn = together;
     }
 
-    /** Keeps the task queued at the earliest beat still to come (stopped beats are not). */
+    /**
+     * Keeps the task queued at the earliest beat still to come (stopped beats are not): a time whose
+     * beats have all stopped goes. Stopped beats are counted, not searched for, so that starting or
+     * stopping one of ten thousand heartbeats does not look at the others.
+     */
     private void requeue() {
-        while (!due.isEmpty()) {
-            DueTogether first = due.firstEntry().getValue();
-            first.beats.removeIf(b -> b.stopped);
-            if (!first.beats.isEmpty()) {
-                break;
-            }
+        while (!due.isEmpty() && due.firstEntry().getValue().live == 0) {
             due.pollFirstEntry();
         }
         if (due.isEmpty()) {
@@ -105,12 +109,15 @@ public final class Heartbeats implements Task {
         private final List<Beat> beats = new ArrayList<>();
         /** Whether {@link #beats} is in starting order (beats arrive from different times). */
         private boolean inOrder = true;
+        /** How many of {@link #beats} have not stopped. */
+        private int live;
 
         void add(Beat b) {
             if (!beats.isEmpty() && beats.get(beats.size() - 1).order > b.order) {
                 inOrder = false;
             }
             beats.add(b);
+            live++;
         }
 
         List<Beat> inOrder() {
@@ -131,6 +138,8 @@ public final class Heartbeats implements Task {
         private double next;
         private int sequence;
         private boolean stopped;
+        /** The beats due together this one is filed with, or null while it is being sent. */
+        private DueTogether filedIn;
 
         private Beat(Beater beater, double start, double interval, long order) {
             this.beater = beater;
@@ -142,7 +151,12 @@ public final class Heartbeats implements Task {
 
         /** No more beats; a beat due at this very moment is not sent. */
         void stop() {
-            stopped = true;
+            if (!stopped) {
+                stopped = true;
+                if (filedIn != null) {
+                    filedIn.live--;
+                }
+            }
             requeue();
         }
 
