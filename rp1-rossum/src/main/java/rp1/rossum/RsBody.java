@@ -340,8 +340,9 @@ public class RsBody extends RsComponent {
         }
         flagContactSensors(walls);
         boolean hit = false;
+        int[] order = RsBodyPart.nearestFirst(walls, motion);
         for (RsBodyShape s : interactive()) {
-            if (s.searchForCollisions(walls, motion)) {
+            if (s.searchForCollisions(walls, order, motion)) {
                 hit = true;
             }
         }

@@ -167,14 +167,21 @@ public abstract class RsBodyPart extends RsComponent {
      * adds other robots to the plan's walls).
      */
     public boolean searchForCollisions(RsWall[] walls, RsMotion motion) {
+        return walls != null && motion != null && searchForCollisions(walls, nearestFirst(walls, motion), motion);
+    }
+
+    /**
+     * As {@link #searchForCollisions(RsWall[], RsMotion)}, trying the walls in {@code order} (from
+     * {@link #nearestFirst}: a body works it out once for all its parts).
+     */
+    boolean searchForCollisions(RsWall[] walls, int[] order, RsMotion motion) {
         RsSegment[] outline = collisionOutline();
-        if (outline == null || outline.length == 0 || walls == null || motion == null) {
+        if (outline == null || outline.length == 0) {
             return false;
         }
         RsSegment[] body = BodyOutline.mapInto(outline, motion.transform0, startOutline);
         startOutline = body;
         boolean hit = false;
-        int[] order = nearestFirst(walls, motion.transform0.m13, motion.transform0.m23);
         for (int k = 0; k < walls.length; k++) {
             RsSegment[] edges = walls[order[k]].getSegmentArray();
             // Once this part has a contact, a wall that can only be met later changes nothing.
@@ -189,12 +196,14 @@ public abstract class RsBodyPart extends RsComponent {
     }
 
     /**
-     * The walls' indexes, the wall whose box is nearest (x, y) first. The contact time is the least
-     * over all walls whatever the order, and a wall wholly beyond a contact already found is passed
-     * over: trying the near walls first finds the contact that lets most of the others be passed over
-     * (a robot driving on for ever has walls all across the plan ahead of it).
+     * The walls' indexes, the wall whose box is nearest where the motion starts first. The contact
+     * time is the least over all walls whatever the order, and a wall wholly beyond a contact already
+     * found is passed over: trying the near walls first finds the contact that lets most of the others
+     * be passed over (a robot driving on for ever has walls all across the plan ahead of it).
      */
-    private static int[] nearestFirst(RsWall[] walls, double x, double y) {
+    static int[] nearestFirst(RsWall[] walls, RsMotion motion) {
+        double x = motion.transform0.m13;
+        double y = motion.transform0.m23;
         int n = walls.length;
         int[] order = new int[n];
         double[] away = new double[n];

@@ -21,10 +21,10 @@ class SweptContactReachTest {
         int skipped = 0;
         int hits = 0;
         for (int i = 0; i < CASES; i++) {
-            RsSegment[] body = polygon(random, random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2, 0.05 + 0.4 * random.nextDouble());
+            RsSegment[] body = body(random);
             RsSegment[] wall = wall(random);
-            double dx = (random.nextDouble() - 0.5) * 6;
-            double dy = (random.nextDouble() - 0.5) * 6;
+            double dx = step(random);
+            double dy = step(random);
             double all = SweptContact.lineSearch(body, body.length, wall, wall.length, dx, dy);
             double withSkip = SweptContact.line(body, body.length, wall, wall.length, dx, dy);
             assertEquals(all, withSkip, 0.0, "case " + i);
@@ -60,10 +60,10 @@ class SweptContactReachTest {
         Random random = new Random(13);
         int skipped = 0;
         for (int i = 0; i < CASES; i++) {
-            RsSegment[] body = polygon(random, random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2, 0.05 + 0.4 * random.nextDouble());
+            RsSegment[] body = body(random);
             RsSegment[] wall = wall(random);
-            double dx = (random.nextDouble() - 0.5) * 6;
-            double dy = (random.nextDouble() - 0.5) * 6;
+            double dx = step(random);
+            double dy = step(random);
             double found = random.nextDouble();
             if (SweptContact.lineBeyond(body, body.length, wall, wall.length, dx, dy, found)) {
                 skipped++;
@@ -91,6 +91,16 @@ class SweptContactReachTest {
         double turn = SweptContact.arc(body, body.length, tangent, tangent.length, 0, 0, 2 * Math.PI);
         assertEquals(SweptContact.arcSearch(body, body.length, tangent, tangent.length, 0, 0, 2 * Math.PI), turn, 0.0);
         assertTrue(Double.isFinite(turn));
+    }
+
+    /** A body of 5 to 45 cm anywhere in a 4 m square about the origin. */
+    private static RsSegment[] body(Random random) {
+        return polygon(random, random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2, 0.05 + 0.4 * random.nextDouble());
+    }
+
+    /** One coordinate of a straight motion: up to 3 m either way. */
+    private static double step(Random random) {
+        return (random.nextDouble() - 0.5) * 6;
     }
 
     /** A convex polygon of 3 to 8 vertices on a circle of radius r about (x, y), as closed edges. */

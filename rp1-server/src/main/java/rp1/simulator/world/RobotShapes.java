@@ -24,12 +24,10 @@ final class RobotShapes {
     /** The last pose {@link #outlinesAt} was asked for, and its answer. */
     private final LastPose outlinesPose = new LastPose();
     private Outlines placed;
-    private final RsBody body;
-    /** Made when a contact first asks for them. */
-    private ContactSensors contactSensors;
+    private final ContactSensors contactSensors;
 
     RobotShapes(RsBody body) {
-        this.body = body;
+        contactSensors = new ContactSensors(body);
         RsBodyShape[] shapes = body.getInteractiveBodyShapeArray();
         outlines = new double[shapes.length][];
         double r = 0.0;
@@ -95,9 +93,6 @@ final class RobotShapes {
 
     /** The body's contact sensors, in the body's order, with their outlines ready to place. */
     ContactSensors contactSensors() {
-        if (contactSensors == null) {
-            contactSensors = new ContactSensors(body);
-        }
         return contactSensors;
     }
 
