@@ -21,12 +21,9 @@ class SweptContactReachTest {
         int skipped = 0;
         int hits = 0;
         for (int i = 0; i < CASES; i++) {
-            RsSegment[] body = body(random);
-            RsSegment[] wall = wall(random);
-            double dx = step(random);
-            double dy = step(random);
-            double all = SweptContact.lineSearch(body, body.length, wall, wall.length, dx, dy);
-            double withSkip = SweptContact.line(body, body.length, wall, wall.length, dx, dy);
+            Drive d = Drive.random(random);
+            double all = d.everyPair();
+            double withSkip = SweptContact.line(d.body, d.body.length, d.wall, d.wall.length, d.dx, d.dy);
             assertEquals(all, withSkip, 0.0, "case " + i);
             skipped += Double.isInfinite(withSkip) ? 1 : 0;
             hits += Double.isInfinite(all) ? 0 : 1;
@@ -60,14 +57,11 @@ class SweptContactReachTest {
         Random random = new Random(13);
         int skipped = 0;
         for (int i = 0; i < CASES; i++) {
-            RsSegment[] body = body(random);
-            RsSegment[] wall = wall(random);
-            double dx = step(random);
-            double dy = step(random);
+            Drive d = Drive.random(random);
             double found = random.nextDouble();
-            if (SweptContact.lineBeyond(body, body.length, wall, wall.length, dx, dy, found)) {
+            if (SweptContact.lineBeyond(d.body, d.body.length, d.wall, d.wall.length, d.dx, d.dy, found)) {
                 skipped++;
-                double contact = SweptContact.lineSearch(body, body.length, wall, wall.length, dx, dy);
+                double contact = d.everyPair();
                 assertTrue(contact > found, "case " + i + ": skipped a contact at " + contact + " before " + found);
             }
         }
@@ -93,14 +87,23 @@ class SweptContactReachTest {
         assertTrue(Double.isFinite(turn));
     }
 
-    /** A body of 5 to 45 cm anywhere in a 4 m square about the origin. */
-    private static RsSegment[] body(Random random) {
-        return polygon(random, random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2, 0.05 + 0.4 * random.nextDouble());
-    }
+    /**
+     * A body of 5 to 45 cm anywhere in a 4 m square about the origin driving up to 3 m either way along
+     * each axis, and a wall.
+     */
+    private record Drive(RsSegment[] body, RsSegment[] wall, double dx, double dy) {
+        static Drive random(Random random) {
+            RsSegment[] body = polygon(random, random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2,
+                    0.05 + 0.4 * random.nextDouble());
+            RsSegment[] wall = SweptContactReachTest.wall(random);
+            double dx = (random.nextDouble() - 0.5) * 6;
+            return new Drive(body, wall, dx, (random.nextDouble() - 0.5) * 6);
+        }
 
-    /** One coordinate of a straight motion: up to 3 m either way. */
-    private static double step(Random random) {
-        return (random.nextDouble() - 0.5) * 6;
+        /** The contact found by testing every pair of edges. */
+        double everyPair() {
+            return SweptContact.lineSearch(body, body.length, wall, wall.length, dx, dy);
+        }
     }
 
     /** A convex polygon of 3 to 8 vertices on a circle of radius r about (x, y), as closed edges. */
