@@ -18,15 +18,13 @@ import rp1.simulator.launch.RunningServer;
  * {@code System.exit} (docs/guide.md says when to use {@code --isolation process}).
  */
 final class LoaderRuns implements RunEngine {
-    private final List<String> robotClasses;
-    private final ClassLoader parent;
+    private final RunClassLoader.Source classes;
     private final double timeoutSeconds;
     private final Set<RunningServer> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
 
     LoaderRuns(List<String> robotClasses, ClassLoader parent, double timeoutSeconds) {
-        this.robotClasses = List.copyOf(robotClasses);
-        this.parent = parent;
+        this.classes = RunClassLoader.source(robotClasses, parent);
         this.timeoutSeconds = timeoutSeconds;
     }
 
@@ -35,7 +33,7 @@ final class LoaderRuns implements RunEngine {
         Thread thread = Thread.currentThread();
         ClassLoader before = thread.getContextClassLoader();
         AtomicReference<RunningServer> mine = new AtomicReference<>();
-        try (RunClassLoader loader = RunClassLoader.of(robotClasses, parent)) {
+        try (RunClassLoader loader = classes.newLoader()) {
             // The robot's threads, and any library it uses that asks the context, see its own classes.
             thread.setContextClassLoader(loader);
             SweepRun here = new SweepRun(run.dir(), loader);

@@ -10,7 +10,9 @@ import java.nio.file.Paths;
 import java.security.CodeSource;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 
 import rp1.rossum.RsClient;
 
@@ -27,18 +29,60 @@ final class RunClassLoader extends URLClassLoader {
         registerAsParallelCapable();
     }
 
-    private final Set<URL> shared;
+    private final Source source;
 
-    private RunClassLoader(URL[] urls, Set<URL> shared, ClassLoader parent) {
-        super("rp1-run", urls, parent);
-        this.shared = shared;
+    private RunClassLoader(Source source) {
+        super("rp1-run", source.urls, source.parent);
+        this.source = source;
     }
 
     /**
-     * A loader for one run: the class path of this process, and the folders or jars that hold
+     * What the loaders of a sweep's runs have in common, worked out once for all of them: the folders
+     * and jars they load from, and which class names are the sweep's to share. A run's robot resolves
+     * dozens of the library's names; working out where each one comes from anew (its code source made
+     * into a URL) was a twentieth of a warm sweep's processor time.
+     */
+    static final class Source {
+        private final URL[] urls;
+        private final Set<URL> shared;
+        private final ClassLoader parent;
+        private final Map<String, Boolean> sharedNames = new ConcurrentHashMap<>();
+
+        private Source(URL[] urls, Set<URL> shared, ClassLoader parent) {
+            this.urls = urls;
+            this.shared = shared;
+            this.parent = parent;
+        }
+
+        /** A fresh loader for one run. */
+        RunClassLoader newLoader() {
+            return new RunClassLoader(this);
+        }
+
+        /** The platform's classes, and classes of the library and the simulator wherever they are found. */
+        boolean isShared(String name) {
+            if (name.startsWith("java.") || name.startsWith("javax.") || name.startsWith("jdk.") || name.startsWith("sun.")) {
+                return true;
+            }
+            return sharedNames.computeIfAbsent(name, this::sharedByLocation);
+        }
+
+        private boolean sharedByLocation(String name) {
+            try {
+                Class<?> parentCopy = Class.forName(name, false, parent);
+                URL at = location(parentCopy);
+                return at == null || shared.contains(at);
+            } catch (ClassNotFoundException | LinkageError e) {
+                return false;
+            }
+        }
+    }
+
+    /**
+     * What a sweep's run loaders load: the class path of this process, and the folders or jars that hold
      * {@code classNames} (the robots, found through {@code parent}), less the simulator's own.
      */
-    static RunClassLoader of(List<String> classNames, ClassLoader parent) {
+    static Source source(List<String> classNames, ClassLoader parent) {
         Set<URL> shared = new LinkedHashSet<>();
         shared.add(location(RsClient.class));
         shared.add(location(RunClassLoader.class));
@@ -64,7 +108,7 @@ final class RunClassLoader extends URLClassLoader {
         }
         urls.removeAll(shared);
         shared.remove(null);
-        return new RunClassLoader(urls.toArray(new URL[0]), shared, parent);
+        return new Source(urls.toArray(new URL[0]), Set.copyOf(shared), parent);
     }
 
     /** Where a class was loaded from (its folder or jar), or null if that is unknown. */
@@ -88,7 +132,7 @@ final class RunClassLoader extends URLClassLoader {
     protected Class<?> loadClass(String name, boolean resolve) throws ClassNotFoundException {
         synchronized (getClassLoadingLock(name)) {
             Class<?> c = findLoadedClass(name);
-            if (c == null && !isShared(name)) {
+            if (c == null && !source.isShared(name)) {
                 try {
                     c = findClass(name);
                 } catch (ClassNotFoundException e) {
@@ -102,20 +146,6 @@ final class RunClassLoader extends URLClassLoader {
                 resolveClass(c);
             }
             return c;
-        }
-    }
-
-    /** The platform's classes, and classes of the library and the simulator wherever they are found. */
-    private boolean isShared(String name) {
-        if (name.startsWith("java.") || name.startsWith("javax.") || name.startsWith("jdk.") || name.startsWith("sun.")) {
-            return true;
-        }
-        try {
-            Class<?> parentCopy = Class.forName(name, false, getParent());
-            URL at = location(parentCopy);
-            return at == null || shared.contains(at);
-        } catch (ClassNotFoundException | LinkageError e) {
-            return false;
         }
     }
 }
