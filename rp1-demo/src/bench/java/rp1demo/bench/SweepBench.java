@@ -16,13 +16,19 @@ import rp1.simulator.launch.JavaCommand;
  * {@code gradle bench} (this module's part, docs/performance.md): the wall time of 64 bumper runs of
  * 60 simulated seconds swept with {@code --jobs 2} in one process ({@code --isolation loader}), side
  * by side with one bumper run started as a process of its own ({@code java rp1.Server -p bumper.ini}),
- * and 8 runs with {@code --isolation process} for comparison. Each figure is the median of three
- * tries, every one a fresh process, as a user would start it. Prints figures and never fails on them.
+ * and 8 runs with {@code --isolation process} for comparison, each JVM with the options the installed
+ * {@code rp1} gives it. Each figure is the median of three tries, every one a fresh process, as a
+ * user would start it. Prints figures and never fails on them.
  */
 public final class SweepBench {
     private static final int TRIES = 3;
-    /** The options ./rp1 sweep starts its JVM with. */
-    private static final List<String> QUICK = List.of("-XX:TieredStopAtLevel=1");
+    /** The options bin/rp1 starts a simulation's JVM with. */
+    private static final List<String> SIMULATOR = JavaCommand.SIMULATOR_OPTIONS;
+    /** The options bin/rp1 starts a sweep's JVM with. */
+    private static final List<String> QUICK = JavaCommand.SWEEP_OPTIONS;
+    /** The same with both compilers. */
+    private static final List<String> BOTH_COMPILERS = QUICK.stream().filter(o -> !o.equals(JavaCommand.QUICK_COMPILER))
+            .toList();
 
     private SweepBench() {
     }
@@ -34,16 +40,16 @@ public final class SweepBench {
                 LocalDate.now(), Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
                 java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         String p = properties.toString();
-        double one = median(List.of(), "rp1.Server", "-p", p);
+        double one = median(SIMULATOR, "rp1.Server", "-p", p);
         double loader = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
-        double fullJit = median(List.of(), "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
+        double fullJit = median(BOTH_COMPILERS, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
         double process = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-8", "--jobs", "2", "--isolation", "process",
                 "--out", "OUT");
-        System.out.printf(Locale.ROOT, "one bumper run of 60 simulated s as a process of its own (java rp1.Server):"
-                + " %.2f s%n", one);
+        System.out.printf(Locale.ROOT, "one bumper run of 60 simulated s as a process of its own (java %s rp1.Server):"
+                + " %.2f s%n", String.join(" ", SIMULATOR), one);
         System.out.printf(Locale.ROOT, "64 such runs, ./rp1 sweep --jobs 2 (--isolation loader, %s): %.2f s, %.1f times"
                 + " the one run (target: at most 2)%n", String.join(" ", QUICK), loader, loader / one);
-        System.out.printf(Locale.ROOT, "the same with both compilers (java rp1.Sweep without options): %.2f s, %.1f times%n",
+        System.out.printf(Locale.ROOT, "the same with both compilers (without %s): %.2f s, %.1f times%n", JavaCommand.QUICK_COMPILER,
                 fullJit, fullJit / one);
         System.out.printf(Locale.ROOT, "8 such runs, --isolation process: %.2f s (%.2f s a run)%n", process, process / 8);
     }

@@ -21,6 +21,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
+import rp1.simulator.launch.JavaCommand;
+
 /**
  * The installed simulator ({@code gradle installDist}: build/install/rp1) used as a newcomer uses it,
  * from a folder of their own, without a display: every file is relative to that folder, a properties
@@ -47,8 +49,18 @@ class InstalledCommandTest {
     }
 
     private Result run(String... command) throws IOException, InterruptedException {
+        return runWith(null, command);
+    }
+
+    /** Runs the command with {@code JAVA_OPTS} set to {@code javaOptions} (none if null). */
+    private Result runWith(String javaOptions, String... command) throws IOException, InterruptedException {
         ProcessBuilder b = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true);
         b.environment().remove("DISPLAY");
+        b.environment().remove("JAVA_OPTS");
+        b.environment().remove("RP1_OPTS");
+        if (javaOptions != null) {
+            b.environment().put("JAVA_OPTS", javaOptions);
+        }
         b.redirectOutput(dir.resolve("output.txt").toFile());
         Process p = b.start();
         assertTrue(p.waitFor(150, TimeUnit.SECONDS), "the command ended");
@@ -134,6 +146,25 @@ class InstalledCommandTest {
         assertEquals(1, r.status(), r.output());
         assertTrue(r.output().contains("cannot find properties mybot.ini"), r.output());
         assertTrue(!r.output().contains("openjdk version"), "the start script says nothing of its own: " + r.output());
+    }
+
+    /**
+     * The JVM options of a simulation and of a sweep (JavaCommand says why), and a collector the user
+     * picks instead of ours: two would keep the JVM from starting.
+     */
+    @Test
+    void theSimulatorAndTheSweepRunWithTheirOwnOptionsUnlessTheUserPicksACollector() throws Exception {
+        String rp1 = Paths.get(INSTALL, "bin", "rp1").toString();
+        Result simulation = runWith("-XX:+PrintCommandLineFlags", rp1, "-p", "mybot.ini");
+        assertEquals(1, simulation.status(), simulation.output());
+        JavaCommand.SIMULATOR_OPTIONS.forEach(o -> assertTrue(simulation.output().contains(o), o + " in " + simulation.output()));
+        Result sweep = runWith("-XX:+PrintCommandLineFlags", rp1, "sweep", "-h");
+        assertEquals(0, sweep.status(), sweep.output());
+        JavaCommand.SWEEP_OPTIONS.forEach(o -> assertTrue(sweep.output().contains(o), o + " in " + sweep.output()));
+        Result theirs = runWith("-XX:+UseParallelGC -XX:+PrintCommandLineFlags", rp1, "-p", "mybot.ini");
+        assertEquals(1, theirs.status(), "the simulator started and found no such file: " + theirs.output());
+        assertTrue(theirs.output().contains("-XX:+UseParallelGC"), theirs.output());
+        assertFalse(theirs.output().contains("-XX:+UseSerialGC"), theirs.output());
     }
 
     @Test

@@ -28,10 +28,10 @@ final class ProcessRuns implements RunEngine {
     static final long STOP_GRACE_SECONDS = 10;
 
     /**
-     * A run computes for milliseconds: the optimizing compiler's work would never pay back, and
-     * costs more than the run (docs/performance.md).
+     * A simulator's options, and the quick compiler only: a run computes for milliseconds, so the
+     * optimizing compiler's work would never pay back, and costs more than the run (docs/performance.md).
      */
-    static final List<String> QUICK_COMPILER = List.of("-XX:TieredStopAtLevel=1");
+    static final List<String> RUN_JVM_OPTIONS = jvmOptions();
 
     private final double timeoutSeconds;
     /** The robot's classes ({@code -cp}), absolute, handed to each run's process. */
@@ -42,6 +42,12 @@ final class ProcessRuns implements RunEngine {
     ProcessRuns(double timeoutSeconds, List<Path> classPath) {
         this.timeoutSeconds = timeoutSeconds;
         this.classPath = List.copyOf(classPath);
+    }
+
+    private static List<String> jvmOptions() {
+        List<String> options = new ArrayList<>(JavaCommand.SIMULATOR_OPTIONS);
+        options.add(JavaCommand.QUICK_COMPILER);
+        return List.copyOf(options);
     }
 
     /** The run's folder, and the robot's class path (-cp), for {@link SweepRun}'s command line. */
@@ -56,7 +62,7 @@ final class ProcessRuns implements RunEngine {
 
     @Override
     public Ran run(Batch.Run run) throws IOException, InterruptedException {
-        Process p = new ProcessBuilder(JavaCommand.of(QUICK_COMPILER, SweepRun.class.getName(), arguments(run)))
+        Process p = new ProcessBuilder(JavaCommand.of(RUN_JVM_OPTIONS, SweepRun.class.getName(), arguments(run)))
                 .redirectErrorStream(true)
                 .redirectOutput(run.dir().resolve(OUTPUT).toFile()).start();
         running.add(p);

@@ -7,6 +7,28 @@ import java.util.List;
 
 /** The command line that runs a class in a new JVM like this one: this Java, this class path, headless. */
 public final class JavaCommand {
+    /**
+     * The options of a JVM that runs one simulation (the installed {@code bin/rp1}, a sweep's run in a
+     * process of its own), unless {@code JAVA_OPTS} or {@code RP1_OPTS} picks a collector: the serial
+     * collector. The simulation runs on one thread and keeps a small heap (tens of megabytes for a
+     * thousand robots), which a stop-the-world collection of the young generation clears in
+     * milliseconds; G1's concurrent machinery (its write barriers, its refinement) cost the simulation
+     * thread 15–20 % with a thousand robots and more, and it kept 60 % more memory resident
+     * (docs/performance.md).
+     */
+    public static final List<String> SIMULATOR_OPTIONS = List.of("-XX:+UseSerialGC");
+
+    /** The quick compiler (C1) only, for JVMs whose code runs for milliseconds. */
+    public static final String QUICK_COMPILER = "-XX:TieredStopAtLevel=1";
+
+    /**
+     * The options of {@code rp1 sweep}'s JVM, which runs {@code --jobs} simulations at once: the
+     * parallel collector (the serial one's cheap barriers, with the young generation collected by as
+     * many threads as the jobs that filled it), and the quick compiler only (a run computes for
+     * milliseconds, and the optimizing compiler's work for it never pays back).
+     */
+    public static final List<String> SWEEP_OPTIONS = List.of("-XX:+UseParallelGC", JavaCommand.QUICK_COMPILER);
+
     private JavaCommand() {
     }
 
