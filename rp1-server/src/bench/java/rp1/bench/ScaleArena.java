@@ -112,7 +112,7 @@ public final class ScaleArena {
         System.exit(0);
     }
 
-    /** Waits until the simulation's clock reaches {@code time}, or for {@code maxMillis} at most. */
+    /** Waits until {@code robots} wanderers are placed, or for {@link #PLACEMENT_TIMEOUT_MILLIS} at most. */
     private static void awaitPlaced(int robots) throws InterruptedException {
         long deadline = System.currentTimeMillis() + PLACEMENT_TIMEOUT_MILLIS;
         while (ScaleWanderer.PLACED.get() < robots && System.currentTimeMillis() < deadline) {
@@ -127,10 +127,11 @@ public final class ScaleArena {
     }
 
     /**
-     * Waits until the simulation reaches {@code time}. Reading the clock takes the scheduler's lock,
-     * and a reader that finds it held must be woken by the simulation thread (at 1,000 robots, polling
-     * every millisecond cost 3–4 % of that thread's time), so it looks rarely while the time is far
-     * off and every millisecond only in the last quarter of the way, where the answer's precision lies.
+     * Waits until the simulation's clock reaches {@code time}, or for {@code maxMillis} at most. Reading
+     * the clock takes the scheduler's lock, and a reader that finds it held must be woken by the
+     * simulation thread (at 1,000 robots, polling every millisecond cost 3–4 % of that thread's time),
+     * so it looks rarely while the time is far off and every millisecond only in the last quarter of the
+     * way, where the answer's precision lies.
      */
     private static void awaitSimTime(RunningServer server, double time, long maxMillis) throws InterruptedException {
         long start = System.nanoTime();

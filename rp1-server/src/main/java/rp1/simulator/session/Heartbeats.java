@@ -159,6 +159,5 @@ public final class Heartbeats implements Task {
             }
             requeue();
         }
-
     }
 }

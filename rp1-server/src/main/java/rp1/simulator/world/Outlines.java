@@ -10,6 +10,8 @@ import rp1.rossum.RsTransform;
  * nothing.
  */
 final class Outlines {
+    /** What this places: each polygon's x0, y0, x1, y1, ... in body coordinates. */
+    private final double[][] source;
     private final double[][] xs;
     private final double[][] ys;
     private final double[] minX;
@@ -26,6 +28,7 @@ final class Outlines {
 
     /** Room for {@code outlines} (each x0, y0, x1, y1, ... in body coordinates), not yet placed. */
     private Outlines(double[][] outlines) {
+        source = outlines;
         int n = outlines.length;
         xs = new double[n][];
         ys = new double[n][];
@@ -45,16 +48,13 @@ final class Outlines {
 
     /** {@code outlines} (each x0, y0, x1, y1, ... in body coordinates) placed at {@code pose}. */
     static Outlines at(double[][] outlines, RsTransform pose) {
-        return new Outlines(outlines).place(outlines, pose);
+        return new Outlines(outlines).place(pose);
     }
 
-    /**
-     * Places these outlines anew: {@code outlines} must be what this was made from. Returns this,
-     * which no longer answers for the pose it had.
-     */
-    Outlines place(double[][] outlines, RsTransform pose) {
-        for (int i = 0; i < outlines.length; i++) {
-            double[] xy = outlines[i];
+    /** Places these outlines anew at {@code pose}. Returns this, which no longer answers for the pose it had. */
+    Outlines place(RsTransform pose) {
+        for (int i = 0; i < source.length; i++) {
+            double[] xy = source[i];
             int n = xy.length / 2;
             double[] x = xs[i];
             double[] y = ys[i];

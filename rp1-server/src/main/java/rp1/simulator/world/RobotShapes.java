@@ -21,9 +21,9 @@ final class RobotShapes {
     /** The last pose {@link #asWalls} was asked for, and its answer. */
     private final LastPose wallsPose = new LastPose();
     private RsWall[] walls;
-    /** The last pose {@link #outlinesAt} was asked for, and its answer. */
+    /** The last pose {@link #outlinesAt} was asked for (the identity at first), and its answer. */
     private final LastPose outlinesPose = new LastPose();
-    private Outlines placed;
+    private final Outlines placed;
     private final ContactSensors contactSensors;
 
     RobotShapes(RsBody body) {
@@ -38,6 +38,7 @@ final class RobotShapes {
             }
         }
         reach = r;
+        placed = Outlines.at(outlines, new RsTransform());
     }
 
     /** The largest distance of any outline vertex from the body origin, metres. */
@@ -81,11 +82,8 @@ final class RobotShapes {
      * pose is kept. It is one object, placed anew for another pose: valid until the next call.
      */
     Outlines outlinesAt(RsTransform pose) {
-        if (placed == null) {
-            placed = Outlines.at(outlines, pose);
-            outlinesPose.set(pose);
-        } else if (!outlinesPose.is(pose)) {
-            placed.place(outlines, pose);
+        if (!outlinesPose.is(pose)) {
+            placed.place(pose);
             outlinesPose.set(pose);
         }
         return placed;
@@ -102,7 +100,6 @@ final class RobotShapes {
      */
     static final class ContactSensors {
         private final RsBodyContactSensor[] sensors;
-        private final double[][][] vertices;
         private final Outlines[] placed;
 
         private ContactSensors(RsBody body) {
@@ -115,10 +112,9 @@ final class RobotShapes {
                 }
             }
             sensors = Arrays.copyOf(found, n);
-            vertices = new double[n][][];
             placed = new Outlines[n];
             for (int i = 0; i < n; i++) {
-                vertices[i] = new double[][] {sensors[i].getOutlineVertices()};
+                placed[i] = Outlines.at(new double[][] {sensors[i].getOutlineVertices()}, new RsTransform());
             }
         }
 
@@ -132,12 +128,7 @@ final class RobotShapes {
 
         /** Sensor {@code i}'s outline at {@code pose}: one object per sensor, valid until the next call. */
         Outlines outlinesAt(int i, RsTransform pose) {
-            if (placed[i] == null) {
-                placed[i] = Outlines.at(vertices[i], pose);
-            } else {
-                placed[i].place(vertices[i], pose);
-            }
-            return placed[i];
+            return placed[i].place(pose);
         }
     }
 

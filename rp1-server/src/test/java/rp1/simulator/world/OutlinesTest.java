@@ -51,8 +51,8 @@ class OutlinesTest {
             assertEquals(overlap, oa.overlaps(ob), "overlap of pair " + i);
             double expected = overlap ? 0.0 : Math.sqrt(bruteSquaredDistance(a, pa, b, pb));
             assertEquals(Double.doubleToLongBits(expected), Double.doubleToLongBits(oa.distance(ob)), "distance of pair " + i);
-            Outlines ra = (a == box ? reusedBox : reusedRobot).place(a, pa);
-            Outlines rb = b == a ? Outlines.at(b, pb) : (b == box ? reusedBox : reusedRobot).place(b, pb);
+            Outlines ra = (a == box ? reusedBox : reusedRobot).place(pa);
+            Outlines rb = b == a ? Outlines.at(b, pb) : (b == box ? reusedBox : reusedRobot).place(pb);
             assertEquals(overlap, ra.overlaps(rb), "overlap of pair " + i + ", placed anew");
             for (double limit : new double[] {1e-3, 5e-3, 0.05}) {
                 double bounded = ra.distance(rb, limit);
