@@ -1,17 +1,23 @@
 package rp1.simulator.batch;
 
+import java.io.Closeable;
 import java.io.File;
+import java.io.IOException;
+import java.io.InputStream;
 import java.net.MalformedURLException;
 import java.net.URISyntaxException;
 import java.net.URL;
 import java.net.URLClassLoader;
+import java.net.URLConnection;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.security.CodeSource;
+import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.WeakHashMap;
 import java.util.concurrent.ConcurrentHashMap;
 
 import rp1.rossum.RsClient;
@@ -23,6 +29,13 @@ import rp1.rossum.RsClient;
  * of its own. The library ({@code rp1.rossum}) and the simulator come from the sweep's loader: the
  * server and the robot must agree on {@code RsClient}. A class the run's loader cannot find on the
  * class path is the sweep loader's.
+ *
+ * <p>A resource the robot reads as a stream (its {@code rossum.ini}, next to its class) is read from
+ * a jar opened for that stream alone. {@link URLClassLoader} reads it through the jar the whole JVM
+ * shares and closes that jar when the loader is closed, so one run ending pulled the jar from under
+ * another run reading it: the other run failed ({@code ZipFile closed}, or a
+ * {@code NullPointerException} inside {@code JarURLConnection}), or its robot quietly went on
+ * without its settings.
  */
 final class RunClassLoader extends URLClassLoader {
     static {
@@ -30,6 +43,8 @@ final class RunClassLoader extends URLClassLoader {
     }
 
     private final Source source;
+    /** The streams this loader opened and its robot may not have closed; closed with the loader. */
+    private final Map<Closeable, Void> streams = new WeakHashMap<>();
 
     private RunClassLoader(Source source) {
         super("rp1-run", source.urls, source.parent);
@@ -147,5 +162,43 @@ final class RunClassLoader extends URLClassLoader {
             }
             return c;
         }
+    }
+
+    /** The resource as a stream of its own: see the class comment. Null if there is none or it cannot be read. */
+    @Override
+    public InputStream getResourceAsStream(String name) {
+        URL url = getResource(name);
+        if (url == null) {
+            return null;
+        }
+        try {
+            URLConnection connection = url.openConnection();
+            connection.setUseCaches(false);
+            InputStream in = connection.getInputStream();
+            synchronized (streams) {
+                streams.put(in, null);
+            }
+            return in;
+        } catch (IOException e) {
+            return null;
+        }
+    }
+
+    /** Closes the streams the run left open, then the loader's own jars. */
+    @Override
+    public void close() throws IOException {
+        List<Closeable> open;
+        synchronized (streams) {
+            open = new ArrayList<>(streams.keySet());
+            streams.clear();
+        }
+        for (Closeable c : open) {
+            try {
+                c.close();
+            } catch (IOException e) {
+                // Closing what the run left behind; the loader's own jars are closed all the same.
+            }
+        }
+        super.close();
     }
 }
