@@ -8,7 +8,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalTime;
+import java.time.format.DateTimeFormatter;
 import java.util.List;
+import java.util.Locale;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -22,6 +24,20 @@ class ServerLogTest {
                 ServerLog.format("s", LocalTime.of(16, 26, 29, 386_000_000), 0.0, "modelingFrameInterval (sec): 0.1"));
         assertEquals("X 12:05:00.007 0012.345: m", ServerLog.format("X", LocalTime.of(0, 5, 0, 7_000_000), 12.345, "m"));
         assertEquals("v 1:00:00.000 0002.999: m", ServerLog.format("v", LocalTime.of(13, 0), 10002.9999, "m"));
+    }
+
+    @Test
+    void theWallClockReadsAsTheTwelveHourPatternWouldWriteIt() {
+        DateTimeFormatter pattern = DateTimeFormatter.ofPattern("h:mm:ss.SSS", Locale.ROOT);
+        // Every hour, minute and second boundary of a day and the milliseconds between, in steps that
+        // visit each digit position.
+        for (long millis = 0; millis < 86_400_000L; millis += 997) {
+            LocalTime t = LocalTime.ofNanoOfDay(millis * 1_000_000L + 123_456L);
+            assertEquals(pattern.format(t), ServerLog.clock(new StringBuilder(), t).toString());
+        }
+        assertEquals("12:00:00.000", ServerLog.clock(new StringBuilder(), LocalTime.MIDNIGHT).toString());
+        assertEquals("12:00:00.000", ServerLog.clock(new StringBuilder(), LocalTime.NOON).toString());
+        assertEquals("11:59:59.999", ServerLog.clock(new StringBuilder(), LocalTime.MAX).toString());
     }
 
     @Test
