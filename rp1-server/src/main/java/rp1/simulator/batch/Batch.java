@@ -57,7 +57,8 @@ public final class Batch {
 
     private final SweepOptions options;
     private final Path out;
-    private final String propertiesText;
+    /** What of the user's properties every run's begin with: without snapshotFileName unless --pictures. */
+    private final String runPropertiesText;
     private final Map<String, RsPlan> plans;
     private final List<Run> runs;
     private final SweepSpec spec;
@@ -96,7 +97,8 @@ public final class Batch {
                   SweepSpec spec, List<Outcome> kept, List<Path> classPath, RunEngine engine) {
         this.options = options;
         this.out = out;
-        this.propertiesText = propertiesText;
+        // An empty value is refused as a typo, so "no picture" is the user's snapshotFileName left out.
+        this.runPropertiesText = options.pictures ? propertiesText : withoutKey(propertiesText, "snapshotFileName");
         this.plans = plans;
         this.runs = runs;
         this.spec = spec;
@@ -437,9 +439,7 @@ public final class Batch {
         if (options.client != null) {
             CLIENT_KEYS.forEach((k, v) -> own.append(k).append('=').append(v).append('\n'));
         }
-        // An empty value is refused as a typo, so "no picture" is the user's snapshotFileName left out.
-        String user = options.pictures ? propertiesText : withoutKey(propertiesText, "snapshotFileName");
-        return user + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + describe(run.configuration())
+        return runPropertiesText + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + describe(run.configuration())
                 + "\n" + own
                 + "randomSeed=" + run.seed() + "\n"
                 + "floorPlanFileName=" + run.plan() + "\n"
@@ -459,10 +459,11 @@ public final class Batch {
     static String withoutKey(String text, String key) {
         StringBuilder kept = new StringBuilder();
         boolean dropping = false;
+        Pattern setting = Pattern.compile(Pattern.quote(key) + "\\s*[=:\\s].*|" + Pattern.quote(key));
         for (String line : text.split("\n", -1)) {
             String t = line.stripLeading();
             boolean continues = line.endsWith("\\");
-            if (dropping || t.matches(Pattern.quote(key) + "\\s*[=:\\s].*|" + Pattern.quote(key))) {
+            if (dropping || setting.matcher(t).matches()) {
                 dropping = continues;
                 continue;
             }

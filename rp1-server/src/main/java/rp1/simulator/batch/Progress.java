@@ -36,8 +36,9 @@ public final class Progress {
         if (terminal) {
             out.print("\r" + bar());
         } else {
-            out.println(String.format(Locale.ROOT, "[%d/%d] seed %d on %s%s: %s (%.1f s)", done, total, o.run().seed(),
-                    o.run().plan(), configuration(o.run()), o.report().endReason(), o.wallSeconds()));
+            // Put together by hand: a format string is parsed and interpreted anew for every run.
+            out.println("[" + done + "/" + total + "] seed " + o.run().seed() + " on " + o.run().plan()
+                    + configuration(o.run()) + ": " + o.report().endReason() + " (" + tenths(o.wallSeconds()) + " s)");
         }
         out.flush();
     }
@@ -47,6 +48,12 @@ public final class Progress {
         if (terminal) {
             out.println();
         }
+    }
+
+    /** Wall seconds (not negative) to the nearest tenth, with one decimal. */
+    static String tenths(double seconds) {
+        long t = Math.round(seconds * 10.0);
+        return (t / 10) + "." + (t % 10);
     }
 
     private String bar() {

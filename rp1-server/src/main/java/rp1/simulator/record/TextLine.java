@@ -49,12 +49,23 @@ final class TextLine {
         line.append(' ');
         if (c == null) {
             line.append('-');
-        } else if (c.getAlpha() == 255) {
-            line.append(String.format(Locale.ROOT, "#%06x", c.getRGB() & 0xFFFFFF));
         } else {
-            line.append(String.format(Locale.ROOT, "#%06x%02x", c.getRGB() & 0xFFFFFF, c.getAlpha()));
+            // Hex digits by hand: a recording's header has a colour per object of the plan, and a
+            // format string is parsed anew for each.
+            line.append('#');
+            hex(c.getRed());
+            hex(c.getGreen());
+            hex(c.getBlue());
+            if (c.getAlpha() != 255) {
+                hex(c.getAlpha());
+            }
         }
         return this;
+    }
+
+    /** Two lower-case hex digits of a byte. */
+    private void hex(int b) {
+        line.append(Character.forDigit(b >> 4, 16)).append(Character.forDigit(b & 15, 16));
     }
 
     /** A named field of an event line: {@code name=value}, the value a real. */

@@ -42,4 +42,14 @@ class ProgressTest {
         assertEquals("[1/2] seed 7 on contest.txt: timeout: still running after 600 s of wall time (1.3 s)\n",
                 bytes.toString(StandardCharsets.UTF_8));
     }
+
+    @Test
+    void wallSecondsAreShownToTheNearestTenth() {
+        assertEquals("0.0", Progress.tenths(0.0));
+        assertEquals("0.0", Progress.tenths(0.049));
+        assertEquals("0.2", Progress.tenths(0.198));
+        assertEquals("1.3", Progress.tenths(1.25));
+        assertEquals("10.0", Progress.tenths(9.96));
+        assertEquals("601.5", Progress.tenths(601.47));
+    }
 }
