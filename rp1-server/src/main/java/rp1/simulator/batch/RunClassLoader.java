@@ -1,9 +1,11 @@
 package rp1.simulator.batch;
 
+import java.io.ByteArrayInputStream;
 import java.io.Closeable;
 import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.UncheckedIOException;
 import java.net.MalformedURLException;
 import java.net.URISyntaxException;
 import java.net.URL;
@@ -30,12 +32,13 @@ import rp1.rossum.RsClient;
  * server and the robot must agree on {@code RsClient}. A class the run's loader cannot find on the
  * class path is the sweep loader's.
  *
- * <p>A resource the robot reads as a stream (its {@code rossum.ini}, next to its class) is read from
- * a jar opened for that stream alone. {@link URLClassLoader} reads it through the jar the whole JVM
- * shares and closes that jar when the loader is closed, so one run ending pulled the jar from under
- * another run reading it: the other run failed ({@code ZipFile closed}, or a
- * {@code NullPointerException} inside {@code JarURLConnection}), or its robot quietly went on
- * without its settings.
+ * <p>A resource the robot reads as a stream (its {@code rossum.ini}, next to its class) is not read
+ * through the jar the whole JVM shares, as {@link URLClassLoader} reads it: that loader closes the
+ * shared jar when it is closed, so one run ending pulled the jar from under another run reading it,
+ * and the other run failed ({@code ZipFile closed}, or a {@code NullPointerException} inside
+ * {@code JarURLConnection}) or its robot quietly went on without its settings. A resource in a jar is
+ * read once per sweep, by a connection of its own, and each run gets the bytes; one in a folder is
+ * opened for the stream alone, and closed with the loader if the run left it open.
  */
 final class RunClassLoader extends URLClassLoader {
     static {
@@ -62,6 +65,8 @@ final class RunClassLoader extends URLClassLoader {
         private final Set<URL> shared;
         private final ClassLoader parent;
         private final Map<String, Boolean> sharedNames = new ConcurrentHashMap<>();
+        /** The resources runs have read from jars, by URL: a jar does not change while a sweep runs. */
+        private final Map<String, byte[]> jarResources = new ConcurrentHashMap<>();
 
         private Source(URL[] urls, Set<URL> shared, ClassLoader parent) {
             this.urls = urls;
@@ -80,6 +85,21 @@ final class RunClassLoader extends URLClassLoader {
                 return true;
             }
             return sharedNames.computeIfAbsent(name, this::sharedByLocation);
+        }
+
+        /** The bytes of a resource in a jar, read the first time a run asks for it. */
+        byte[] jarResource(URL url) throws IOException {
+            try {
+                return jarResources.computeIfAbsent(url.toString(), k -> {
+                    try (InputStream in = ownConnection(url)) {
+                        return in.readAllBytes();
+                    } catch (IOException e) {
+                        throw new UncheckedIOException(e);
+                    }
+                });
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            }
         }
 
         private boolean sharedByLocation(String name) {
@@ -164,7 +184,7 @@ final class RunClassLoader extends URLClassLoader {
         }
     }
 
-    /** The resource as a stream of its own: see the class comment. Null if there is none or it cannot be read. */
+    /** The resource as a stream that no other run shares (see the class comment); null if there is none or it cannot be read. */
     @Override
     public InputStream getResourceAsStream(String name) {
         URL url = getResource(name);
@@ -172,9 +192,10 @@ final class RunClassLoader extends URLClassLoader {
             return null;
         }
         try {
-            URLConnection connection = url.openConnection();
-            connection.setUseCaches(false);
-            InputStream in = connection.getInputStream();
+            if ("jar".equals(url.getProtocol())) {
+                return new ByteArrayInputStream(source.jarResource(url));
+            }
+            InputStream in = ownConnection(url);
             synchronized (streams) {
                 streams.put(in, null);
             }
@@ -182,6 +203,13 @@ final class RunClassLoader extends URLClassLoader {
         } catch (IOException e) {
             return null;
         }
+    }
+
+    /** A stream of the resource on a connection of its own, not on the jar the JVM shares. */
+    private static InputStream ownConnection(URL url) throws IOException {
+        URLConnection connection = url.openConnection();
+        connection.setUseCaches(false);
+        return connection.getInputStream();
     }
 
     /** Closes the streams the run left open, then the loader's own jars. */

@@ -102,8 +102,10 @@ class RunClassLoaderTest {
 
     @Test
     void aStreamTheRobotLeftOpenIsClosedWithItsLoader(@TempDir Path dir) throws Exception {
-        Path jar = robotJar(dir, "logToSystemOut=false\n");
-        try (URLClassLoader sweep = new URLClassLoader(new URL[] {jar.toUri().toURL()},
+        // A robot in a folder of classes (as built by an IDE), its settings beside its class.
+        Path classes = robotJar(dir, "logToSystemOut=false\n").resolveSibling("classes");
+        Files.writeString(classes.resolve("probe/rossum.ini"), "logToSystemOut=false\n");
+        try (URLClassLoader sweep = new URLClassLoader(new URL[] {classes.toUri().toURL()},
                 RunClassLoaderTest.class.getClassLoader())) {
             RunClassLoader.Source source = RunClassLoader.source(List.of("probe.Probe"), sweep);
             InputStream left;
