@@ -3,7 +3,6 @@ package rp1.simulator.batch;
 import java.io.IOException;
 import java.io.Reader;
 import java.io.StringReader;
-import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -73,27 +72,67 @@ public record RunReport(double endTime, String endReason, int exitStatus, List<R
 
     /** Writes the report into {@code dir}. */
     public void write(Path dir) throws IOException {
-        Properties p = new Properties();
-        p.setProperty("end_time", Double.toString(endTime));
-        p.setProperty("end_reason", endReason);
-        p.setProperty("exit_status", Integer.toString(exitStatus));
-        p.setProperty("robots", Integer.toString(robots.size()));
+        Map<String, String> p = new LinkedHashMap<>();
+        p.put("end_time", Double.toString(endTime));
+        p.put("end_reason", endReason);
+        p.put("exit_status", Integer.toString(exitStatus));
+        p.put("robots", Integer.toString(robots.size()));
         for (int i = 0; i < robots.size(); i++) {
             RobotResult r = robots.get(i);
             String k = "robot." + (i + 1) + ".";
-            p.setProperty(k + "name", r.name());
+            p.put(k + "name", r.name());
             pose(p, k + "start.", r.start());
             pose(p, k + "end.", r.end());
-            p.setProperty(k + "distance", Double.toString(r.distance()));
-            p.setProperty(k + "collisions", Integer.toString(r.collisions()));
-            p.setProperty(k + "first_collision_time", Double.toString(r.firstCollisionTime()));
-            p.setProperty(k + "events", Long.toString(r.events()));
-            p.setProperty(k + "results", String.join(",", r.results().keySet()));
-            r.results().forEach((name, value) -> p.setProperty(k + "result." + name, Double.toString(value)));
+            p.put(k + "distance", Double.toString(r.distance()));
+            p.put(k + "collisions", Integer.toString(r.collisions()));
+            p.put(k + "first_collision_time", Double.toString(r.firstCollisionTime()));
+            p.put(k + "events", Long.toString(r.events()));
+            p.put(k + "results", String.join(",", r.results().keySet()));
+            r.results().forEach((name, value) -> p.put(k + "result." + name, Double.toString(value)));
         }
-        StringWriter text = new StringWriter();
-        p.store(text, null);
-        Files.write(dir.resolve(FILE), text.toString().getBytes(StandardCharsets.UTF_8));
+        Files.write(dir.resolve(FILE), propertiesText(p).getBytes(StandardCharsets.UTF_8));
+    }
+
+    /**
+     * The entries as lines of a properties file, in their order, escaped as {@link Properties#store}
+     * escapes them (characters outside printable ASCII as a backslash, u and four hex digits), without
+     * its date line, so that {@link Properties#load} reads them back. Written by hand because a sweep
+     * writes one per run, and the store's date and escaping ran in the interpreter for most of a
+     * 64-run sweep.
+     */
+    static String propertiesText(Map<String, String> entries) {
+        StringBuilder text = new StringBuilder(64 * entries.size());
+        entries.forEach((key, value) -> {
+            escape(text, key, true);
+            text.append('=');
+            escape(text, value, false);
+            text.append('\n');
+        });
+        return text.toString();
+    }
+
+    private static void escape(StringBuilder out, String s, boolean key) {
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            switch (c) {
+                case ' ' -> out.append(key || i == 0 ? "\\ " : " ");
+                case '\t' -> out.append("\\t");
+                case '\n' -> out.append("\\n");
+                case '\r' -> out.append("\\r");
+                case '\f' -> out.append("\\f");
+                case '=', ':', '#', '!', '\\' -> out.append('\\').append(c);
+                default -> {
+                    if (c < 0x20 || c > 0x7e) {
+                        out.append("\\u");
+                        for (int shift = 12; shift >= 0; shift -= 4) {
+                            out.append(Character.forDigit((c >> shift) & 15, 16));
+                        }
+                    } else {
+                        out.append(c);
+                    }
+                }
+            }
+        }
     }
 
     /**
@@ -128,10 +167,10 @@ public record RunReport(double endTime, String endReason, int exitStatus, List<R
         }
     }
 
-    private static void pose(Properties p, String prefix, RobotResult.Pose pose) {
-        p.setProperty(prefix + "x", Double.toString(pose.x()));
-        p.setProperty(prefix + "y", Double.toString(pose.y()));
-        p.setProperty(prefix + "heading", Double.toString(pose.heading()));
+    private static void pose(Map<String, String> p, String prefix, RobotResult.Pose pose) {
+        p.put(prefix + "x", Double.toString(pose.x()));
+        p.put(prefix + "y", Double.toString(pose.y()));
+        p.put(prefix + "heading", Double.toString(pose.heading()));
     }
 
     private static RobotResult.Pose pose(Properties p, String prefix) throws IOException {

@@ -5,7 +5,6 @@ import java.net.InetAddress;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
@@ -59,8 +58,6 @@ final class ClientLauncher implements LoadedClient.Listener {
     private final ServerConfig config;
     private final ServerLog log;
     private final AtomicInteger running;
-    private final CountDownLatch allStarted = new CountDownLatch(1);
-    private volatile boolean allReady = true;
     private volatile Outcome outcome;
 
     private ClientLauncher(List<LoadedClient> clients, ServerConfig config, ServerLog log) {
@@ -99,11 +96,16 @@ final class ClientLauncher implements LoadedClient.Listener {
 
     /**
      * Connects every client to {@code simulation}, in order, then starts their threads one after the
-     * other on a thread of its own (see the class comment).
+     * other on a thread of its own (see the class comment), and then runs {@code whenStarted} on it:
+     * once every client's {@code initialize()} has returned and the server has dealt with the requests
+     * an in-process one sent meanwhile, or its {@code connectTimeout} has passed. A lockstep simulation
+     * starts its clock then, so a run's first requests are all stamped at time 0, in the order of
+     * {@code dlcName}, and the same seed gives the same run.
      *
      * @param port the port of the server's listener, for clients that connect over TCP (-1 if none)
      */
-    void launch(Simulation simulation, ClientRegistry registry, int port, Outcome whenDone) throws IOException {
+    void launch(Simulation simulation, ClientRegistry registry, int port, Outcome whenDone, Runnable whenStarted)
+            throws IOException {
         outcome = whenDone;
         for (LoadedClient c : clients) {
             int session = LoadedRunContext.NO_SESSION;
@@ -122,13 +124,16 @@ final class ClientLauncher implements LoadedClient.Listener {
                         simulation.getReportedResults(), session));
             }
         }
-        Thread starter = new Thread(this::startInOrder, "dlc start");
+        Thread starter = new Thread(() -> startInOrder(whenStarted), "dlc start");
         starter.setDaemon(true);
         starter.start();
     }
 
-    /** Starts each client once the one before is ready, each given at most {@code connectTimeout}. */
-    private void startInOrder() {
+    /**
+     * Starts each client once the one before is ready, each given at most {@code connectTimeout}, then
+     * runs {@code whenStarted} (not if interrupted: the server is stopping).
+     */
+    private void startInOrder(Runnable whenStarted) {
         try {
             for (LoadedClient c : clients) {
                 log.log("Launching thread for client: \"" + c.className + "\"");
@@ -137,15 +142,13 @@ final class ClientLauncher implements LoadedClient.Listener {
                 if (!c.awaitReady(deadline)) {
                     log.log("client " + c.className + ": initialize() has not finished after " + config.connectTimeout
                             + " s; going on without waiting for it");
-                    allReady = false;
                 }
             }
         } catch (InterruptedException e) {
-            allReady = false;
             Thread.currentThread().interrupt();
-        } finally {
-            allStarted.countDown();
+            return;
         }
+        whenStarted.run();
     }
 
     /** Connects the client through pipes; returns its session number. */
@@ -191,19 +194,6 @@ final class ClientLauncher implements LoadedClient.Listener {
         p.hostName = bound.isAnyLocalAddress() ? InetAddress.getLoopbackAddress().getHostAddress() : bound.getHostAddress();
         p.port = port;
         ((RsClient) c.client).rsProperties = p;
-    }
-
-    /**
-     * Waits until every client has been started in turn: its {@code initialize()} has returned and the
-     * server has dealt with the requests an in-process one sent meanwhile, or its {@code connectTimeout}
-     * has passed. A lockstep simulation starts its clock after this, so a run's first requests are all
-     * stamped at time 0, in the order of {@code dlcName}, and the same seed gives the same run.
-     *
-     * @return whether every client got that far in time
-     */
-    boolean awaitReady() throws InterruptedException {
-        allStarted.await();
-        return allReady;
     }
 
     @Override

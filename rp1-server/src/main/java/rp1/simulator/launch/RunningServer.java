@@ -105,16 +105,15 @@ public final class RunningServer {
         if (parts.listener != null) {
             parts.listener.start();
         }
+        // In lockstep the clock waits until the loaded clients have started, in order (ClientLauncher).
+        boolean waitForClients = c.lockstep && !parts.launcher.isEmpty();
         try {
-            parts.launcher.launch(parts.simulation, parts.registry, getPort(), new ClientOutcome());
+            parts.launcher.launch(parts.simulation, parts.registry, getPort(), new ClientOutcome(),
+                    waitForClients ? parts.simulation::startClock : () -> { });
         } catch (IOException e) {
             throw new StartupException("cannot launch the loaded clients: " + e.getMessage());
         }
-        if (c.lockstep && !parts.launcher.isEmpty()) {
-            Thread barrier = new Thread(this::startClockWhenClientsReady, "clock start");
-            barrier.setDaemon(true);
-            barrier.start();
-        } else {
+        if (!waitForClients) {
             parts.simulation.startClock();
         }
     }
@@ -150,15 +149,6 @@ public final class RunningServer {
                     + "still and " + why + "; the run ends here");
             requestStop(ExitStatus.OK, NOBODY_LEFT);
         });
-    }
-
-    private void startClockWhenClientsReady() {
-        try {
-            parts.launcher.awaitReady();
-            parts.simulation.startClock();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
     }
 
     /** How loaded clients end the server. */
