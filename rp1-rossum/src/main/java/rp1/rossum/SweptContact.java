@@ -21,6 +21,12 @@ final class SweptContact {
      * lie beyond a contact already found: far more than the rounding of a contact's fraction.
      */
     private static final double ROUNDING_SLACK = 1.0e-9;
+    /**
+     * Slack, relative to the size of the coordinates, of the test that a mover's line of travel misses
+     * an edge: far more than the rounding of the intersection test, so a pair it skips has no
+     * intersection to find.
+     */
+    private static final double ACROSS_SLACK = 1.0e-9;
 
     private SweptContact() {
     }
@@ -69,14 +75,36 @@ final class SweptContact {
         return Math.min(sweep(body, nBody, walls, nWalls, dx, dy), sweep(walls, nWalls, body, nBody, -dx, -dy));
     }
 
-    /** Moves every start point of {@code movers} by (dx, dy) and intersects the path with {@code edges}. */
+    /**
+     * Moves every start point of {@code movers} by (dx, dy) and intersects the path with {@code edges}.
+     * A point meets an edge only where its line of travel crosses the edge, that is, where its place
+     * across the direction of travel lies within the edge's extent across it; the intersection is
+     * computed only for those pairs (most of a body's vertices pass beside a wall's edge).
+     */
     private static double sweep(RsSegment[] movers, int nMovers, RsSegment[] edges, int nEdges, double dx, double dy) {
+        double length = Math.hypot(dx, dy);
+        if (length == 0.0) {
+            return Double.POSITIVE_INFINITY;
+        }
+        // The unit normal of the direction of travel: a point's place across it.
+        double nx = -dy / length;
+        double ny = dx / length;
         RsSegSect sect = new RsSegSect();
         double best = Double.POSITIVE_INFINITY;
-        for (int i = 0; i < nMovers; i++) {
-            RsSegment p = movers[i];
-            for (int j = 0; j < nEdges; j++) {
-                RsSegment e = edges[j];
+        for (int j = 0; j < nEdges; j++) {
+            RsSegment e = edges[j];
+            double a = nx * e.x + ny * e.y;
+            double b = nx * (e.x + e.v.x) + ny * (e.y + e.v.y);
+            double slack = ACROSS_SLACK * (1.0 + Math.abs(e.x) + Math.abs(e.y) + Math.abs(e.v.x) + Math.abs(e.v.y));
+            double lo = Math.min(a, b) - slack;
+            double hi = Math.max(a, b) + slack;
+            for (int i = 0; i < nMovers; i++) {
+                RsSegment p = movers[i];
+                double across = nx * p.x + ny * p.y;
+                double own = ACROSS_SLACK * (Math.abs(p.x) + Math.abs(p.y));
+                if (across + own < lo || across - own > hi) {
+                    continue;
+                }
                 if (sect.process(p.x, p.y, dx, dy, e.x, e.y, e.v.x, e.v.y) && sect.t1 < best) {
                     best = sect.t1;
                 }

@@ -87,6 +87,57 @@ class SweptContactReachTest {
         assertTrue(Double.isFinite(turn));
     }
 
+    @Test
+    void passingOverPointsThatGoBesideAnEdgeNeverChangesAStraightMotionsContact() {
+        Random random = new Random(17);
+        int hits = 0;
+        for (int i = 0; i < CASES; i++) {
+            Drive d = Drive.random(random);
+            // Now and then a drive "for ever" (a robot told to go on at its speed), as far as 500 km.
+            double far = i % 5 == 0 ? 1.0e5 : 1.0;
+            double expected = plainEveryPair(d.body, d.wall, d.dx * far, d.dy * far);
+            assertEquals(expected, SweptContact.lineSearch(d.body, d.body.length, d.wall, d.wall.length, d.dx * far,
+                    d.dy * far), 0.0, "case " + i);
+            hits += Double.isInfinite(expected) ? 0 : 1;
+        }
+        assertTrue(hits > CASES / 20, hits + " of " + CASES + " with contact");
+        // On the grid: squares driving along an axis past walls whose ends lie exactly on the lines their
+        // corners travel, walls along the direction of travel, and corners meeting corners.
+        for (int i = 0; i < CASES; i++) {
+            double x = random.nextInt(9) - 4;
+            double y = random.nextInt(9) - 4;
+            RsSegment[] body = square(x, y, 1 + random.nextInt(2));
+            double wx = random.nextInt(13) - 6;
+            double wy = random.nextInt(13) - 6;
+            RsSegment[] wall = {new RsSegment(wx, wy, wx + random.nextInt(5) - 2, wy + random.nextInt(5) - 2)};
+            double dx = random.nextBoolean() ? random.nextInt(9) - 4 : 0;
+            double dy = dx == 0 ? random.nextInt(9) - 4 : (random.nextBoolean() ? dx : 0);
+            assertEquals(plainEveryPair(body, wall, dx, dy), SweptContact.lineSearch(body, body.length, wall, wall.length,
+                    dx, dy), 0.0, "grid case " + i);
+        }
+    }
+
+    /** Every vertex of each against every edge of the other, the intersection computed for each pair. */
+    private static double plainEveryPair(RsSegment[] body, RsSegment[] wall, double dx, double dy) {
+        RsSegSect sect = new RsSegSect();
+        double best = Double.POSITIVE_INFINITY;
+        for (RsSegment p : body) {
+            for (RsSegment e : wall) {
+                if (sect.process(p.x, p.y, dx, dy, e.x, e.y, e.v.x, e.v.y) && sect.t1 < best) {
+                    best = sect.t1;
+                }
+            }
+        }
+        for (RsSegment p : wall) {
+            for (RsSegment e : body) {
+                if (sect.process(p.x, p.y, -dx, -dy, e.x, e.y, e.v.x, e.v.y) && sect.t1 < best) {
+                    best = sect.t1;
+                }
+            }
+        }
+        return best;
+    }
+
     /**
      * A body of 5 to 45 cm anywhere in a 4 m square about the origin driving up to 3 m either way along
      * each axis, and a wall.
