@@ -1,7 +1,6 @@
 package rp1.simulator.batch;
 
 import java.io.ByteArrayInputStream;
-import java.io.Closeable;
 import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
@@ -13,14 +12,16 @@ import java.net.URLClassLoader;
 import java.net.URLConnection;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.security.CodeSigner;
 import java.security.CodeSource;
-import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
-import java.util.WeakHashMap;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.jar.JarFile;
+import java.util.jar.Manifest;
 
 import rp1.rossum.RsClient;
 
@@ -32,13 +33,16 @@ import rp1.rossum.RsClient;
  * server and the robot must agree on {@code RsClient}. A class the run's loader cannot find on the
  * class path is the sweep loader's.
  *
- * <p>A resource the robot reads as a stream (its {@code rossum.ini}, next to its class) is not read
- * through the jar the whole JVM shares, as {@link URLClassLoader} reads it: that loader closes the
- * shared jar when it is closed, so one run ending pulled the jar from under another run reading it,
- * and the other run failed ({@code ZipFile closed}, or a {@code NullPointerException} inside
- * {@code JarURLConnection}) or its robot quietly went on without its settings. A resource in a jar is
- * read once per sweep, by a connection of its own, and each run gets the bytes; one in a folder is
- * opened for the stream alone, and closed with the loader if the run left it open.
+ * <p>The robot's classes and resources are found and read once per sweep ({@link Source}), and each
+ * run defines its classes from those bytes and reads its resources from them: every run opening the
+ * robot's jar, looking its entries up and inflating them again was about a twentieth of what the runs
+ * of a 64-run sweep ran.
+ * Nothing a run reads is read through the jar the whole JVM shares either: {@link URLClassLoader}
+ * reads a resource stream through it and closes it when the loader is closed, so one run ending
+ * pulled the jar from under another run reading its {@code rossum.ini}, and that run failed
+ * ({@code ZipFile closed}, or a {@code NullPointerException} inside {@code JarURLConnection}) or its
+ * robot quietly went on without its settings. The classes are defined as {@link URLClassLoader}
+ * would define them (code source, package with the jar's manifest), without signers.
  */
 final class RunClassLoader extends URLClassLoader {
     static {
@@ -46,8 +50,6 @@ final class RunClassLoader extends URLClassLoader {
     }
 
     private final Source source;
-    /** The streams this loader opened and its robot may not have closed; closed with the loader. */
-    private final Map<Closeable, Void> streams = new WeakHashMap<>();
 
     private RunClassLoader(Source source) {
         super("rp1-run", source.urls, source.parent);
@@ -56,22 +58,37 @@ final class RunClassLoader extends URLClassLoader {
 
     /**
      * What the loaders of a sweep's runs have in common, worked out once for all of them: the folders
-     * and jars they load from, and which class names are the sweep's to share. A run's robot resolves
-     * dozens of the library's names; working out where each one comes from anew (its code source made
-     * into a URL) was a twentieth of a warm sweep's processor time.
+     * and jars they load from, which class names are the sweep's to share, and the robot's classes and
+     * resources as found and read there (a jar or a class folder does not change while a sweep runs). A
+     * run's robot resolves dozens of the library's names; working out where each one comes from anew
+     * (its code source made into a URL) was a twentieth of a warm sweep's processor time.
      */
     static final class Source {
         private final URL[] urls;
         private final Set<URL> shared;
         private final ClassLoader parent;
         private final Map<String, Boolean> sharedNames = new ConcurrentHashMap<>();
-        /** The resources runs have read from jars, by URL: a jar does not change while a sweep runs. */
-        private final Map<String, byte[]> jarResources = new ConcurrentHashMap<>();
+        /**
+         * Finds the robot's own classes and resources: the runs' class path, no parent. Open as long as
+         * the sweep's runs may ask; its jars are closed when it is collected.
+         */
+        private final URLClassLoader finder;
+        /** Where each name asked for was found on the runs' class path (empty: nowhere). */
+        private final Map<String, Optional<URL>> found = new ConcurrentHashMap<>();
+        /** The contents of each resource read so far, by URL. */
+        private final Map<String, byte[]> contents = new ConcurrentHashMap<>();
+        /** Each folder or jar of the runs' class path as a code source, with its jar's manifest. */
+        private final Map<URL, Location> locations = new ConcurrentHashMap<>();
+
+        /** A folder or jar classes are defined from. */
+        private record Location(CodeSource codeSource, Manifest manifest) {
+        }
 
         private Source(URL[] urls, Set<URL> shared, ClassLoader parent) {
             this.urls = urls;
             this.shared = shared;
             this.parent = parent;
+            this.finder = new URLClassLoader(urls, null);
         }
 
         /** A fresh loader for one run. */
@@ -87,10 +104,15 @@ final class RunClassLoader extends URLClassLoader {
             return sharedNames.computeIfAbsent(name, this::sharedByLocation);
         }
 
-        /** The bytes of a resource in a jar, read the first time a run asks for it. */
-        byte[] jarResource(URL url) throws IOException {
+        /** Where {@code name} is on the runs' class path, or null. */
+        URL find(String name) {
+            return found.computeIfAbsent(name, n -> Optional.ofNullable(finder.findResource(n))).orElse(null);
+        }
+
+        /** The contents of the resource at {@code url}, read the first time a run asks for it. */
+        byte[] contents(URL url) throws IOException {
             try {
-                return jarResources.computeIfAbsent(url.toString(), k -> {
+                return contents.computeIfAbsent(url.toString(), k -> {
                     try (InputStream in = ownConnection(url)) {
                         return in.readAllBytes();
                     } catch (IOException e) {
@@ -100,6 +122,36 @@ final class RunClassLoader extends URLClassLoader {
             } catch (UncheckedIOException e) {
                 throw e.getCause();
             }
+        }
+
+        /** The folder or jar of the runs' class path that {@code resource} (found there) is in. */
+        Location locationOf(URL resource) throws IOException {
+            String at = resource.toString();
+            for (URL u : urls) {
+                String base = u.toString();
+                if (at.startsWith("jar:" + base + "!/") || at.startsWith(base)) {
+                    try {
+                        return locations.computeIfAbsent(u, Source::open);
+                    } catch (UncheckedIOException e) {
+                        throw e.getCause();
+                    }
+                }
+            }
+            throw new IOException(resource + " is not on the runs' class path");
+        }
+
+        private static Location open(URL u) {
+            Manifest manifest = null;
+            if (!u.getPath().endsWith("/")) {
+                try (JarFile jar = new JarFile(new File(u.toURI()))) {
+                    manifest = jar.getManifest();
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
+                } catch (URISyntaxException | IllegalArgumentException e) {
+                    // Not a jar on a file system: defined without its manifest.
+                }
+            }
+            return new Location(new CodeSource(u, (CodeSigner[]) null), manifest);
         }
 
         private boolean sharedByLocation(String name) {
@@ -184,7 +236,44 @@ final class RunClassLoader extends URLClassLoader {
         }
     }
 
-    /** The resource as a stream that no other run shares (see the class comment); null if there is none or it cannot be read. */
+    /** The robot's class, from the bytes the sweep read (see the class comment). */
+    @Override
+    protected Class<?> findClass(String name) throws ClassNotFoundException {
+        URL url = source.find(name.replace('.', '/').concat(".class"));
+        if (url == null) {
+            throw new ClassNotFoundException(name);
+        }
+        try {
+            byte[] bytes = source.contents(url);
+            Source.Location at = source.locationOf(url);
+            int dot = name.lastIndexOf('.');
+            if (dot > 0) {
+                String pkg = name.substring(0, dot);
+                if (getDefinedPackage(pkg) == null) {
+                    try {
+                        if (at.manifest() != null) {
+                            definePackage(pkg, at.manifest(), at.codeSource().getLocation());
+                        } else {
+                            definePackage(pkg, null, null, null, null, null, null, null);
+                        }
+                    } catch (IllegalArgumentException e) {
+                        // Defined meanwhile by another thread of the run.
+                    }
+                }
+            }
+            return defineClass(name, bytes, 0, bytes.length, at.codeSource());
+        } catch (IOException e) {
+            throw new ClassNotFoundException(name, e);
+        }
+    }
+
+    /** Where the resource is on the runs' class path, as the sweep found it once. */
+    @Override
+    public URL findResource(String name) {
+        return source.find(name);
+    }
+
+    /** The resource from the bytes the sweep read (see the class comment); null if there is none or it cannot be read. */
     @Override
     public InputStream getResourceAsStream(String name) {
         URL url = getResource(name);
@@ -192,14 +281,7 @@ final class RunClassLoader extends URLClassLoader {
             return null;
         }
         try {
-            if ("jar".equals(url.getProtocol())) {
-                return new ByteArrayInputStream(source.jarResource(url));
-            }
-            InputStream in = ownConnection(url);
-            synchronized (streams) {
-                streams.put(in, null);
-            }
-            return in;
+            return new ByteArrayInputStream(source.contents(url));
         } catch (IOException e) {
             return null;
         }
@@ -210,23 +292,5 @@ final class RunClassLoader extends URLClassLoader {
         URLConnection connection = url.openConnection();
         connection.setUseCaches(false);
         return connection.getInputStream();
-    }
-
-    /** Closes the streams the run left open, then the loader's own jars. */
-    @Override
-    public void close() throws IOException {
-        List<Closeable> open;
-        synchronized (streams) {
-            open = new ArrayList<>(streams.keySet());
-            streams.clear();
-        }
-        for (Closeable c : open) {
-            try {
-                c.close();
-            } catch (IOException e) {
-                // Closing what the run left behind; the loader's own jars are closed all the same.
-            }
-        }
-        super.close();
     }
 }

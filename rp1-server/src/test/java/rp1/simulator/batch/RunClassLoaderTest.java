@@ -3,6 +3,7 @@ package rp1.simulator.batch;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -16,8 +17,10 @@ import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.jar.Attributes;
 import java.util.jar.JarEntry;
 import java.util.jar.JarOutputStream;
+import java.util.jar.Manifest;
 
 import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
@@ -101,29 +104,37 @@ class RunClassLoaderTest {
     }
 
     @Test
-    void aStreamTheRobotLeftOpenIsClosedWithItsLoader(@TempDir Path dir) throws Exception {
-        // A robot in a folder of classes (as built by an IDE), its settings beside its class.
-        Path classes = robotJar(dir, "logToSystemOut=false\n").resolveSibling("classes");
-        Files.writeString(classes.resolve("probe/rossum.ini"), "logToSystemOut=false\n");
+    void aRobotsClassesAreDefinedAsFromItsJarAndItsFolderResourcesRead(@TempDir Path dir) throws Exception {
+        Path jar = robotJar(dir, "logToSystemOut=false\n");
+        try (URLClassLoader sweep = new URLClassLoader(new URL[] {jar.toUri().toURL()},
+                RunClassLoaderTest.class.getClassLoader())) {
+            RunClassLoader.Source source = RunClassLoader.source(List.of("probe.Probe"), sweep);
+            try (RunClassLoader first = source.newLoader(); RunClassLoader second = source.newLoader()) {
+                Class<?> a = first.loadClass("probe.Probe");
+                Class<?> b = second.loadClass("probe.Probe");
+                assertNotSame(a, b, "each run defines the robot anew from what the sweep read once");
+                assertEquals(jar.toUri().toURL(), a.getProtectionDomain().getCodeSource().getLocation());
+                assertEquals("probe", a.getPackage().getName());
+                assertEquals("1.2", a.getPackage().getImplementationVersion(), "the jar's manifest");
+                assertEquals(new URL("jar:" + jar.toUri().toURL() + "!/probe/rossum.ini"), a.getResource("rossum.ini"));
+                assertEquals(null, a.getResource("missing.ini"));
+                assertThrows(ClassNotFoundException.class, () -> first.loadClass("probe.Missing"));
+            }
+        }
+        // A robot in a folder of classes (as an IDE builds it), its settings beside its class.
+        Path classes = dir.resolve("classes");
+        Files.writeString(classes.resolve("probe/rossum.ini"), "logToSystemOut=true\n");
         try (URLClassLoader sweep = new URLClassLoader(new URL[] {classes.toUri().toURL()},
                 RunClassLoaderTest.class.getClassLoader())) {
             RunClassLoader.Source source = RunClassLoader.source(List.of("probe.Probe"), sweep);
-            InputStream left;
             try (RunClassLoader loader = source.newLoader()) {
-                left = loader.loadClass("probe.Probe").getResourceAsStream("rossum.ini");
-                assertEquals('l', left.read());
+                Class<?> robot = loader.loadClass("probe.Probe");
+                assertEquals(classes.toUri().toURL(), robot.getProtectionDomain().getCodeSource().getLocation());
+                try (InputStream in = robot.getResourceAsStream("rossum.ini")) {
+                    assertEquals("logToSystemOut=true\n", new String(in.readAllBytes(), StandardCharsets.UTF_8));
+                }
             }
-            assertThrowsIo(left);
         }
-    }
-
-    private static void assertThrowsIo(InputStream closed) {
-        try {
-            closed.read();
-        } catch (IOException e) {
-            return;
-        }
-        throw new AssertionError("the stream the run left open was not closed with its loader");
     }
 
     /** A jar with a robot class {@code probe.Probe} and its {@code rossum.ini}, as a robot of one's own ships. */
@@ -134,7 +145,10 @@ class RunClassLoaderTest {
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
         assertEquals(0, javac.run(null, null, null, "-d", classes.toString(), src.resolve("Probe.java").toString()));
         Path jar = dir.resolve("probe.jar");
-        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar))) {
+        Manifest manifest = new Manifest();
+        manifest.getMainAttributes().put(Attributes.Name.MANIFEST_VERSION, "1.0");
+        manifest.getMainAttributes().put(Attributes.Name.IMPLEMENTATION_VERSION, "1.2");
+        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar), manifest)) {
             out.putNextEntry(new JarEntry("probe/Probe.class"));
             out.write(Files.readAllBytes(classes.resolve("probe/Probe.class")));
             out.closeEntry();
