@@ -121,6 +121,20 @@ final class Grid {
         }
     }
 
+    /**
+     * Moves item {@code id} from the box it was inserted over to [x0, x1] x [y0, y1]. Most moves stay
+     * within the same cells (a robot's box moves a few centimetres per evaluation in metre cells), and
+     * then the cells are left as they are.
+     */
+    void move(int id, double oldX0, double oldY0, double oldX1, double oldY1, double x0, double y0, double x1,
+              double y1) {
+        if (col(oldX0) == col(x0) && col(oldX1) == col(x1) && row(oldY0) == row(y0) && row(oldY1) == row(y1)) {
+            return;
+        }
+        remove(id, oldX0, oldY0, oldX1, oldY1);
+        insert(id, x0, y0, x1, y1);
+    }
+
     private void add(int index, int id) {
         int[] list = cells[index];
         int n = counts[index];

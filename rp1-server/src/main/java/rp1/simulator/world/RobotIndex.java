@@ -35,8 +35,8 @@ final class RobotIndex {
      * (robots without shapes are not filed: nothing can touch or see them).
      */
     void put(Robot r, double time, double horizon) {
-        remove(r);
         if (r.shapes().isEmpty()) {
+            remove(r);
             return;
         }
         int n = r.getNumber();
@@ -44,17 +44,21 @@ final class RobotIndex {
             byNumber = Arrays.copyOf(byNumber, Math.max(n + 1, byNumber.length * 2));
             boxes = Arrays.copyOf(boxes, 4 * byNumber.length);
         }
-        byNumber[n] = r;
         RsTransform pose = r.poseAt(time);
         double x = pose.m13;
         double y = pose.m23;
         double grow = r.shapes().reach() + r.speedBound() * horizon + RobotContacts.SAMPLE_SPACING;
         int b = 4 * n;
+        if (byNumber[n] == null) {
+            grid.insert(n, x - grow, y - grow, x + grow, y + grow);
+        } else {
+            grid.move(n, boxes[b], boxes[b + 1], boxes[b + 2], boxes[b + 3], x - grow, y - grow, x + grow, y + grow);
+        }
+        byNumber[n] = r;
         boxes[b] = x - grow;
         boxes[b + 1] = y - grow;
         boxes[b + 2] = x + grow;
         boxes[b + 3] = y + grow;
-        grid.insert(n, boxes[b], boxes[b + 1], boxes[b + 2], boxes[b + 3]);
     }
 
     /** Takes the robot out. */

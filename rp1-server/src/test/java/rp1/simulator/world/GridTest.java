@@ -28,6 +28,49 @@ class GridTest {
     }
 
     /**
+     * Items moved a little or far, in and out of the area, are found exactly where a grid that took
+     * them out and put them in anew finds them.
+     */
+    @Test
+    void aMovedItemIsFoundWhereItWasPutAnew() {
+        double side = 20.0;
+        Grid moved = new Grid(new RsRectangle(0, 0, side, side), 1.0, MAX_CELLS);
+        Grid anew = new Grid(new RsRectangle(0, 0, side, side), 1.0, MAX_CELLS);
+        java.util.Random random = new java.util.Random(9);
+        double[][] boxes = new double[60][];
+        for (int id = 0; id < boxes.length; id++) {
+            boxes[id] = box(random, random.nextDouble() * side, random.nextDouble() * side);
+            moved.insert(id, boxes[id][0], boxes[id][1], boxes[id][2], boxes[id][3]);
+            anew.insert(id, boxes[id][0], boxes[id][1], boxes[id][2], boxes[id][3]);
+        }
+        for (int step = 0; step < 20_000; step++) {
+            int id = random.nextInt(boxes.length);
+            double[] old = boxes[id];
+            // Mostly a robot's few centimetres, now and then a jump (a placement), sometimes off the area.
+            double jump = step % 50 == 0 ? side : 0.05;
+            double[] box = box(random, old[0] + (random.nextDouble() - 0.5) * jump,
+                    old[1] + (random.nextDouble() - 0.5) * jump);
+            moved.move(id, old[0], old[1], old[2], old[3], box[0], box[1], box[2], box[3]);
+            anew.remove(id, old[0], old[1], old[2], old[3]);
+            anew.insert(id, box[0], box[1], box[2], box[3]);
+            boxes[id] = box;
+            double qx = random.nextDouble() * side * 1.2 - 0.1 * side;
+            double qy = random.nextDouble() * side * 1.2 - 0.1 * side;
+            double w = random.nextDouble() * 3;
+            List<Integer> a = query(moved, qx, qy, qx + w, qy + w);
+            List<Integer> b = query(anew, qx, qy, qx + w, qy + w);
+            a.sort(null);
+            b.sort(null);
+            assertEquals(b, a, "step " + step);
+        }
+    }
+
+    private static double[] box(java.util.Random random, double x, double y) {
+        double w = 0.1 + 0.5 * random.nextDouble();
+        return new double[] {x, y, x + w, y + w};
+    }
+
+    /**
      * Along a segment, the cells visited are those whose centre is within the radius and half a cell's
      * diagonal of it, among the cells of its box grown by the radius, however long it is (a drive "for
      * ever" reaches far beyond the plan): the same as trying every cell of the box, which this does.
