@@ -54,28 +54,14 @@ final class BodyCodec {
     }
 
     /**
-     * The body as the server decodes it from the wire: encoded and decoded again, so it holds exactly
-     * the parts and values the wire carries, every part with the id it has in {@code body}.
-     *
-     * @throws IllegalArgumentException as {@link #encode(RsBody)} does
-     */
-    static RsBody copy(RsBody body) {
-        try {
-            return decode(encode(body));
-        } catch (IOException e) {
-            throw new IllegalStateException("a body this library encoded cannot be decoded", e);
-        }
-    }
-
-    /**
-     * Refuses a body payload that the server would refuse: one whose dimensions include NaN or an
-     * infinity (decoding checks every number).
+     * The body the payload describes, as the server decodes it; refuses a payload that the server
+     * would refuse: one whose dimensions include NaN or an infinity (decoding checks every number).
      *
      * @throws IllegalArgumentException naming the first such field
      */
-    static void requireFinite(WireOut payload) {
+    static RsBody checked(WireOut payload) {
         try {
-            decode(payload.toByteArray());
+            return decode(payload.toByteArray());
         } catch (RsProtocolException e) {
             throw new IllegalArgumentException("body " + e.getMessage(), e);
         } catch (IOException e) {

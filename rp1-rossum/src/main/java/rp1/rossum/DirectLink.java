@@ -10,7 +10,7 @@ import rp1.rossum.wire.RequestListener;
  * A client and the server's end of its session in one process, without streams
  * ({@link RsConnection#connectDirect}). Requests go from the client straight into the connection's
  * listener; events go from the connection straight into the client's handlers, on the sending thread.
- * What crosses is what the wire would deliver: the body as a decoded copy ({@link BodyCodec#copy}),
+ * What crosses is what the wire would deliver: the body as the copy decoded from its payload,
  * every event as the copy the client would decode ({@link EventCodec#copy}), every request as the
  * object the server would decode ({@link RequestCodec#copying}). The client builds its requests for the
  * wire; this link alone pays for making them look decoded.
@@ -34,11 +34,12 @@ final class DirectLink {
     }
 
     /**
-     * The client's body, as the server would decode it from the wire: every part keeps the id it has
-     * in the client's body.
+     * The client's body as the server would decode it from the wire ({@link BodyCodec#checked} of its
+     * payload): every part keeps the id it has in the client's body, and the client's later changes
+     * to its own body do not reach it.
      */
-    void body(RsBody body) {
-        server.bodyReceived(BodyCodec.copy(body));
+    void body(RsBody decoded) {
+        server.bodyReceived(decoded);
     }
 
     /**

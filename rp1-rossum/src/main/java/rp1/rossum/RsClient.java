@@ -1085,14 +1085,15 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
         Objects.requireNonNull(body, "body");
         WireOut payload = new WireOut();
         BodyCodec.encode(payload, body);
-        BodyCodec.requireFinite(payload);
+        // Decoding checks every number, and gives the copy the server would decode from the wire.
+        RsBody decoded = BodyCodec.checked(payload);
         if (body.getID() == 0) {
             body.assignID(++bodiesSent);
         }
         DirectLink l = link;
         // After the session has ended, the wire path drops the body with a log line, as it drops requests.
         if (l != null && !isClosed()) {
-            l.body(body);
+            l.body(decoded);
             return;
         }
         sendMessage(BODY_SPECIFICATION, payload);
