@@ -36,13 +36,14 @@ import rp1.rossum.RsClient;
  * <p>The robot's classes and resources are found and read once per sweep ({@link Source}), and each
  * run defines its classes from those bytes and reads its resources from them: every run opening the
  * robot's jar, looking its entries up and inflating them again was about a twentieth of what the runs
- * of a 64-run sweep ran.
- * Nothing a run reads is read through the jar the whole JVM shares either: {@link URLClassLoader}
+ * of a 64-run sweep ran. The classes are defined as {@link URLClassLoader} would define them (code
+ * source, package with the jar's manifest), without signers.
+ *
+ * <p>Nothing a run reads is read through the jar the whole JVM shares either: {@link URLClassLoader}
  * reads a resource stream through it and closes it when the loader is closed, so one run ending
  * pulled the jar from under another run reading its {@code rossum.ini}, and that run failed
  * ({@code ZipFile closed}, or a {@code NullPointerException} inside {@code JarURLConnection}) or its
- * robot quietly went on without its settings. The classes are defined as {@link URLClassLoader}
- * would define them (code source, package with the jar's manifest), without signers.
+ * robot quietly went on without its settings.
  */
 final class RunClassLoader extends URLClassLoader {
     static {
