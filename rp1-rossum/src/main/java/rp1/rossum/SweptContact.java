@@ -89,20 +89,24 @@ final class SweptContact {
         // The unit normal of the direction of travel: a point's place across it.
         double nx = -dy / length;
         double ny = dx / length;
+        double moversSize = 0.0;
+        for (int i = 0; i < nMovers; i++) {
+            moversSize = Math.max(moversSize, Math.abs(movers[i].x) + Math.abs(movers[i].y));
+        }
         RsSegSect sect = new RsSegSect();
         double best = Double.POSITIVE_INFINITY;
         for (int j = 0; j < nEdges; j++) {
             RsSegment e = edges[j];
             double a = nx * e.x + ny * e.y;
             double b = nx * (e.x + e.v.x) + ny * (e.y + e.v.y);
-            double slack = ACROSS_SLACK * (1.0 + Math.abs(e.x) + Math.abs(e.y) + Math.abs(e.v.x) + Math.abs(e.v.y));
+            double slack = ACROSS_SLACK
+                    * (1.0 + moversSize + Math.abs(e.x) + Math.abs(e.y) + Math.abs(e.v.x) + Math.abs(e.v.y));
             double lo = Math.min(a, b) - slack;
             double hi = Math.max(a, b) + slack;
             for (int i = 0; i < nMovers; i++) {
                 RsSegment p = movers[i];
                 double across = nx * p.x + ny * p.y;
-                double own = ACROSS_SLACK * (Math.abs(p.x) + Math.abs(p.y));
-                if (across + own < lo || across - own > hi) {
+                if (across < lo || across > hi) {
                     continue;
                 }
                 if (sect.process(p.x, p.y, dx, dy, e.x, e.y, e.v.x, e.v.y) && sect.t1 < best) {

@@ -131,25 +131,21 @@ final class RunClassLoader extends URLClassLoader {
             for (URL u : urls) {
                 String base = u.toString();
                 if (at.startsWith("jar:" + base + "!/") || at.startsWith(base)) {
-                    try {
-                        return locations.computeIfAbsent(u, Source::open);
-                    } catch (UncheckedIOException e) {
-                        throw e.getCause();
-                    }
+                    return locations.computeIfAbsent(u, Source::open);
                 }
             }
             throw new IOException(resource + " is not on the runs' class path");
         }
 
+        /** The folder or jar as a code source, with the jar's manifest if it has one that can be read. */
         private static Location open(URL u) {
             Manifest manifest = null;
             if (!u.getPath().endsWith("/")) {
                 try (JarFile jar = new JarFile(new File(u.toURI()))) {
                     manifest = jar.getManifest();
-                } catch (IOException e) {
-                    throw new UncheckedIOException(e);
-                } catch (URISyntaxException | IllegalArgumentException e) {
-                    // Not a jar on a file system: defined without its manifest.
+                } catch (IOException | URISyntaxException | IllegalArgumentException e) {
+                    // Not a readable jar on a file system: its classes' bytes were read all the same,
+                    // so they are defined without its manifest.
                 }
             }
             return new Location(new CodeSource(u, (CodeSigner[]) null), manifest);
@@ -249,22 +245,27 @@ final class RunClassLoader extends URLClassLoader {
             Source.Location at = source.locationOf(url);
             int dot = name.lastIndexOf('.');
             if (dot > 0) {
-                String pkg = name.substring(0, dot);
-                if (getDefinedPackage(pkg) == null) {
-                    try {
-                        if (at.manifest() != null) {
-                            definePackage(pkg, at.manifest(), at.codeSource().getLocation());
-                        } else {
-                            definePackage(pkg, null, null, null, null, null, null, null);
-                        }
-                    } catch (IllegalArgumentException e) {
-                        // Defined meanwhile by another thread of the run.
-                    }
-                }
+                definePackageOnce(name.substring(0, dot), at);
             }
             return defineClass(name, bytes, 0, bytes.length, at.codeSource());
         } catch (IOException e) {
             throw new ClassNotFoundException(name, e);
+        }
+    }
+
+    /** Defines the package, with the jar's manifest if there is one, unless it already is. */
+    private void definePackageOnce(String pkg, Source.Location at) {
+        if (getDefinedPackage(pkg) != null) {
+            return;
+        }
+        try {
+            if (at.manifest() != null) {
+                definePackage(pkg, at.manifest(), at.codeSource().getLocation());
+            } else {
+                definePackage(pkg, null, null, null, null, null, null, null);
+            }
+        } catch (IllegalArgumentException e) {
+            // Defined meanwhile by another thread of the run.
         }
     }
 
