@@ -228,7 +228,7 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
 
         /** Whether (x, y) is within {@code distance} of the last point. */
         boolean closeToLast(double x, double y, double distance) {
-            return Math.hypot(x - xy[size - 2], y - xy[size - 1]) < distance;
+            return Trail.shorter(x - xy[size - 2], y - xy[size - 1], distance);
         }
 
         double[] toArray() {

@@ -9,6 +9,13 @@ import java.util.List;
  * new piece begins wherever the robot was placed anew.
  */
 public record Trail(String robot, List<double[]> pieces) {
+    /**
+     * Factors on a squared distance beyond which the distances surely compare as their squares do:
+     * squaring and summing round by about 1e-16, {@code hypot} by less than that.
+     */
+    private static final double SURELY_LESS = 1.0 - 1.0e-9;
+    private static final double SURELY_MORE = 1.0 + 1.0e-9;
+
     /** Copies the list (the arrays are not changed once a trail is made). */
     public Trail {
         pieces = List.copyOf(pieces);
@@ -31,17 +38,7 @@ public record Trail(String robot, List<double[]> pieces) {
         spans.push(new int[] {0, n - 1});
         while (!spans.isEmpty()) {
             int[] span = spans.pop();
-            int farthest = -1;
-            double most = tolerance;
-            double surelyLess = below(most);
-            for (int i = span[0] + 1; i < span[1]; i++) {
-                double d = distance(xy, i, span[0], span[1], surelyLess);
-                if (d > most) {
-                    most = d;
-                    surelyLess = below(most);
-                    farthest = i;
-                }
-            }
+            int farthest = farthest(xy, span[0], span[1], tolerance);
             if (farthest >= 0) {
                 keep[farthest] = true;
                 spans.push(new int[] {span[0], farthest});
@@ -63,30 +60,60 @@ public record Trail(String robot, List<double[]> pieces) {
     }
 
     /**
-     * A squared distance under which the distance itself is surely below {@code d}, rounding
-     * included: most points lie well within the tolerance, and for them the exact (and slow)
-     * {@link Math#hypot} is not needed to know it.
+     * The point between {@code a} and {@code b} farthest from the segment joining them, the first of
+     * equals, if it is farther than {@code tolerance} ({@link Math#hypot} measuring); -1 if none is.
+     * Squared distances decide wherever they surely agree with {@code hypot} (a relative margin far
+     * above their rounding), and {@code hypot}, exact but slow, only where two distances are within
+     * it: the same point comes out as if every distance were measured with {@code hypot}.
      */
-    private static double below(double d) {
-        return d * d * (1.0 - 1.0e-9);
-    }
-
-    /**
-     * How far point {@code i} is from the segment between points {@code a} and {@code b}; 0 if its
-     * squared distance is below {@code surelyLess}.
-     */
-    private static double distance(double[] xy, int i, int a, int b, double surelyLess) {
+    private static int farthest(double[] xy, int a, int b, double tolerance) {
         double ax = xy[2 * a];
         double ay = xy[2 * a + 1];
         double dx = xy[2 * b] - ax;
         double dy = xy[2 * b + 1] - ay;
-        double px = xy[2 * i] - ax;
-        double py = xy[2 * i + 1] - ay;
         double length2 = dx * dx + dy * dy;
-        double t = length2 == 0 ? 0 : Math.max(0, Math.min(1, (px * dx + py * dy) / length2));
-        double ex = px - t * dx;
-        double ey = py - t * dy;
-        return ex * ex + ey * ey < surelyLess ? 0.0 : Math.hypot(ex, ey);
+        int farthest = -1;
+        double mostSquared = tolerance * tolerance;
+        double mostX = 0;
+        double mostY = 0;
+        for (int i = a + 1; i < b; i++) {
+            double px = xy[2 * i] - ax;
+            double py = xy[2 * i + 1] - ay;
+            double t = length2 == 0 ? 0 : Math.max(0, Math.min(1, (px * dx + py * dy) / length2));
+            double ex = px - t * dx;
+            double ey = py - t * dy;
+            double squared = ex * ex + ey * ey;
+            if (squared < mostSquared * SURELY_LESS) {
+                continue;
+            }
+            if (squared <= mostSquared * SURELY_MORE) {
+                double most = farthest < 0 ? tolerance : Math.hypot(mostX, mostY);
+                if (!(Math.hypot(ex, ey) > most)) {
+                    continue;
+                }
+            }
+            farthest = i;
+            mostSquared = squared;
+            mostX = ex;
+            mostY = ey;
+        }
+        return farthest;
+    }
+
+    /**
+     * Whether {@code Math.hypot(dx, dy) < distance}, computed from squares unless the two are within
+     * rounding of each other.
+     */
+    static boolean shorter(double dx, double dy, double distance) {
+        double squared = dx * dx + dy * dy;
+        double limit = distance * distance;
+        if (squared < limit * SURELY_LESS) {
+            return true;
+        }
+        if (squared > limit * SURELY_MORE) {
+            return false;
+        }
+        return Math.hypot(dx, dy) < distance;
     }
 
     /** A piece of path from its coordinates {@code x0, y0, x1, y1, ...}. */
