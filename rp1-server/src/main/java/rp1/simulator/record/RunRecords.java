@@ -4,8 +4,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.Executor;
 import java.util.concurrent.TimeUnit;
 
 import rp1.rossum.RsLogInterface;
@@ -17,28 +17,28 @@ import rp1.simulator.Simulation;
  * scheduler has stopped. While the run goes, both are put on disk once a wall-clock second, so a
  * process that is killed loses at most its last second; a run at {@code simulationSpeed=max} pays
  * for one write a second, not one per line.
+ *
+ * <p>The flushes are timed by the JDK's own delay thread, shared by every run in the process, and
+ * done on it (a flush hands buffered bytes to the operating system): a sweep's thousand short runs
+ * start no thread each for it.
  */
 public final class RunRecords implements AutoCloseable {
     /** Wall-clock time between two flushes. */
     private static final long FLUSH_MILLIS = 1000;
+    /** Runs a task a flush interval from now, on the JDK's delay thread. */
+    private static final Executor AFTER_A_WHILE = CompletableFuture.delayedExecutor(FLUSH_MILLIS, TimeUnit.MILLISECONDS,
+            Runnable::run);
 
     private final Recorder recorder;
     private final EventStream events;
-    private final ScheduledExecutorService flusher;
+    private volatile boolean closed;
 
     private RunRecords(Recorder recorder, EventStream events) {
         this.recorder = recorder;
         this.events = events;
-        if (events == null) {
-            flusher = null;
-            return;
+        if (events != null) {
+            AFTER_A_WHILE.execute(this::flushAndWait);
         }
-        flusher = Executors.newSingleThreadScheduledExecutor(r -> {
-            Thread t = new Thread(r, "rp1-records-flush");
-            t.setDaemon(true);
-            return t;
-        });
-        flusher.scheduleWithFixedDelay(this::flush, FLUSH_MILLIS, FLUSH_MILLIS, TimeUnit.MILLISECONDS);
     }
 
     /** Nothing kept. */
@@ -81,11 +81,16 @@ public final class RunRecords implements AutoCloseable {
         }
     }
 
-    private void flush() {
+    /** Flushes and comes back a flush interval later, until closed. */
+    private void flushAndWait() {
+        if (closed) {
+            return;
+        }
         events.flush();
         if (recorder != null) {
             recorder.flush();
         }
+        AFTER_A_WHILE.execute(this::flushAndWait);
     }
 
     /**
@@ -94,9 +99,7 @@ public final class RunRecords implements AutoCloseable {
      */
     @Override
     public void close() {
-        if (flusher != null) {
-            flusher.shutdownNow();
-        }
+        closed = true;
         if (recorder != null) {
             recorder.close(events);
         }
