@@ -6,13 +6,13 @@ import java.awt.Dimension;
 import java.awt.Graphics2D;
 import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
+import java.io.BufferedOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
-
-import javax.imageio.ImageIO;
 
 import rp1.io.WholeFiles;
 import rp1.rossum.RsPoint;
@@ -154,8 +154,8 @@ public final class Pictures {
             Files.createDirectories(dir);
         }
         WholeFiles.write(absolute, part -> {
-            if (!ImageIO.write(image, "png", part.toFile())) {
-                throw new IOException("no PNG writer available");
+            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(part), 1 << 16)) {
+                PngEncoder.write(image, out);
             }
         });
     }

@@ -14,8 +14,6 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 
-import javax.imageio.ImageIO;
-
 import rp1.rossum.RsPlan;
 import rp1.simulator.snapshot.WorldSnapshot;
 
@@ -92,7 +90,7 @@ public final class SweepPicture {
             g.dispose();
         }
         try {
-            ImageIO.write(image, "png", new ByteArrayOutputStream());
+            PngEncoder.write(image, new ByteArrayOutputStream());
         } catch (IOException e) {
             // Only a warm-up: the real picture reports its own failures.
         }
