@@ -24,11 +24,11 @@ public final class SweepBench {
     private static final int TRIES = 3;
     /** The options bin/rp1 starts a simulation's JVM with. */
     private static final List<String> SIMULATOR = JavaCommand.SIMULATOR_OPTIONS;
-    /** The options bin/rp1 starts a sweep's JVM with. */
-    private static final List<String> QUICK = JavaCommand.SWEEP_OPTIONS;
-    /** The same with both compilers. */
-    private static final List<String> BOTH_COMPILERS = QUICK.stream().filter(o -> !o.equals(JavaCommand.QUICK_COMPILER))
-            .toList();
+    /** The options bin/rp1 starts a sweep's JVM with on this machine. */
+    private static final List<String> QUICK = JavaCommand.sweepOptions(Runtime.getRuntime().availableProcessors());
+    /** The same with both compilers (and the JVM's own number of compiler threads, which both need). */
+    private static final List<String> BOTH_COMPILERS = QUICK.stream()
+            .filter(o -> !o.equals(JavaCommand.QUICK_COMPILER) && !o.equals(JavaCommand.ONE_COMPILER_THREAD)).toList();
 
     private SweepBench() {
     }

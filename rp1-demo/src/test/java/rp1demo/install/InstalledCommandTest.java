@@ -149,8 +149,9 @@ class InstalledCommandTest {
     }
 
     /**
-     * The JVM options of a simulation and of a sweep (JavaCommand says why), and a collector the user
-     * picks instead of ours: two would keep the JVM from starting.
+     * The JVM options of a simulation and of a sweep (JavaCommand says why), and a collector or a
+     * compiler setting the user picks instead of ours: two collectors, or one compiler thread for both
+     * compilers, would keep the JVM from starting.
      */
     @Test
     void theSimulatorAndTheSweepRunWithTheirOwnOptionsUnlessTheUserPicksACollector() throws Exception {
@@ -161,10 +162,17 @@ class InstalledCommandTest {
         Result sweep = runWith("-XX:+PrintCommandLineFlags", rp1, "sweep", "-h");
         assertEquals(0, sweep.status(), sweep.output());
         JavaCommand.SWEEP_OPTIONS.forEach(o -> assertTrue(sweep.output().contains(o), o + " in " + sweep.output()));
+        int processors = Integer.parseInt(run("getconf", "_NPROCESSORS_ONLN").output().trim());
+        assertEquals(processors <= JavaCommand.FEW_PROCESSORS, sweep.output().contains(JavaCommand.ONE_COMPILER_THREAD),
+                processors + " processors: " + sweep.output());
         Result theirs = runWith("-XX:+UseParallelGC -XX:+PrintCommandLineFlags", rp1, "-p", "mybot.ini");
         assertEquals(1, theirs.status(), "the simulator started and found no such file: " + theirs.output());
         assertTrue(theirs.output().contains("-XX:+UseParallelGC"), theirs.output());
         assertFalse(theirs.output().contains("-XX:+UseSerialGC"), theirs.output());
+        Result bothCompilers = runWith("-XX:TieredStopAtLevel=4 -XX:+PrintCommandLineFlags", rp1, "sweep", "-h");
+        assertEquals(0, bothCompilers.status(), "one compiler thread would keep both compilers from starting: "
+                + bothCompilers.output());
+        assertFalse(bothCompilers.output().contains(JavaCommand.ONE_COMPILER_THREAD), bothCompilers.output());
     }
 
     @Test
