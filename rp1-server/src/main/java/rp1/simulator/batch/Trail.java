@@ -74,8 +74,11 @@ public record Trail(String robot, List<double[]> pieces) {
         double length2 = dx * dx + dy * dy;
         int farthest = -1;
         double mostSquared = tolerance * tolerance;
-        double mostX = 0;
-        double mostY = 0;
+        double mostX = Double.NaN;
+        double mostY = Double.NaN;
+        // hypot of the farthest so far once needed (NaN before): a robot backing out along its way in
+        // leaves points exactly as far from the chord as others, each within rounding of the farthest.
+        double most = tolerance;
         for (int i = a + 1; i < b; i++) {
             double px = xy[2 * i] - ax;
             double py = xy[2 * i + 1] - ay;
@@ -86,9 +89,16 @@ public record Trail(String robot, List<double[]> pieces) {
             if (squared < mostSquared * SURELY_LESS) {
                 continue;
             }
+            double exact = Double.NaN;
             if (squared <= mostSquared * SURELY_MORE) {
-                double most = farthest < 0 ? tolerance : Math.hypot(mostX, mostY);
-                if (!(Math.hypot(ex, ey) > most)) {
+                if (Math.abs(ex) == Math.abs(mostX) && Math.abs(ey) == Math.abs(mostY)) {
+                    continue;
+                }
+                if (Double.isNaN(most)) {
+                    most = Math.hypot(mostX, mostY);
+                }
+                exact = Math.hypot(ex, ey);
+                if (!(exact > most)) {
                     continue;
                 }
             }
@@ -96,6 +106,7 @@ public record Trail(String robot, List<double[]> pieces) {
             mostSquared = squared;
             mostX = ex;
             mostY = ey;
+            most = exact;
         }
         return farthest;
     }

@@ -51,6 +51,22 @@ class TrailTest {
         }
         double[] back = {0, 0, 1, 0, 2, 0, 1, 0, 0, 0, 1, 0};
         assertArrayEquals(everyDistanceByHypot(back, 0.002), Trail.simplified(back, 0.002));
+        for (int trial = 0; trial < 300; trial++) {
+            // Out along a bent way and back over the very same points, as a bumper backs off.
+            int n = 3 + random.nextInt(60);
+            double[] out = new double[4 * n];
+            double heading = random.nextDouble(2 * Math.PI);
+            for (int i = 1; i < n; i++) {
+                heading += random.nextDouble(-0.3, 0.3);
+                out[2 * i] = out[2 * i - 2] + 0.01 * Math.cos(heading);
+                out[2 * i + 1] = out[2 * i - 1] + 0.01 * Math.sin(heading);
+            }
+            for (int i = 0; i < n; i++) {
+                out[2 * (n + i)] = out[2 * (n - 1 - i)];
+                out[2 * (n + i) + 1] = out[2 * (n - 1 - i) + 1];
+            }
+            assertArrayEquals(everyDistanceByHypot(out, 0.002), Trail.simplified(out, 0.002), "retraced " + trial);
+        }
     }
 
     @Test
