@@ -17,11 +17,14 @@ import rp1.simulator.launch.JavaCommand;
  * 60 simulated seconds swept with {@code --jobs 2} in one process ({@code --isolation loader}), side
  * by side with one bumper run started as a process of its own ({@code java rp1.Server -p bumper.ini}),
  * and 8 runs with {@code --isolation process} for comparison, each JVM with the options the installed
- * {@code rp1} gives it. Each figure is the median of three tries, every one a fresh process, as a
- * user would start it. Prints figures and never fails on them.
+ * {@code rp1} gives it, every one a fresh process, as a user would start it. The one run and the
+ * sweep are timed in {@link #PAIRS} alternating pairs and compared pair by pair; the others are the
+ * median of three tries. Prints figures and never fails on them.
  */
 public final class SweepBench {
     private static final int TRIES = 3;
+    /** Pairs of the one run and the 64-run sweep, timed alternately. */
+    private static final int PAIRS = 8;
     /** The options bin/rp1 starts a simulation's JVM with. */
     private static final List<String> SIMULATOR = JavaCommand.SIMULATOR_OPTIONS;
     /** The options bin/rp1 starts a sweep's JVM with on this machine. */
@@ -40,15 +43,33 @@ public final class SweepBench {
                 LocalDate.now(), Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
                 java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         String p = properties.toString();
-        double one = median(SIMULATOR, "rp1.Server", "-p", p);
-        double loader = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
+        // The one run and the sweep alternate, pair by pair, each pair in the other order: a machine
+        // that grows busier or quieter meanwhile moves both, and the ratio is taken within each pair.
+        double[] ones = new double[PAIRS];
+        double[] sweeps = new double[PAIRS];
+        double[] ratios = new double[PAIRS];
+        for (int i = 0; i < PAIRS; i++) {
+            if (i % 2 == 0) {
+                ones[i] = time(SIMULATOR, "rp1.Server", "-p", p);
+            }
+            sweeps[i] = time(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
+            if (i % 2 == 1) {
+                ones[i] = time(SIMULATOR, "rp1.Server", "-p", p);
+            }
+            ratios[i] = sweeps[i] / ones[i];
+        }
+        double one = median(ones);
+        double loader = median(sweeps);
         double fullJit = median(BOTH_COMPILERS, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
         double process = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-8", "--jobs", "2", "--isolation", "process",
                 "--out", "OUT");
         System.out.printf(Locale.ROOT, "one bumper run of 60 simulated s as a process of its own (java %s rp1.Server):"
                 + " %.2f s%n", String.join(" ", SIMULATOR), one);
-        System.out.printf(Locale.ROOT, "64 such runs, ./rp1 sweep --jobs 2 (--isolation loader, %s): %.2f s, %.1f times"
-                + " the one run (target: at most 2)%n", String.join(" ", QUICK), loader, loader / one);
+        double[] sorted = ratios.clone();
+        Arrays.sort(sorted);
+        System.out.printf(Locale.ROOT, "64 such runs, ./rp1 sweep --jobs 2 (--isolation loader, %s): %.2f s; %.2f times"
+                + " the one run (median of %d alternating pairs' ratios, %.2f to %.2f; target: at most 2)%n",
+                String.join(" ", QUICK), loader, median(ratios), PAIRS, sorted[0], sorted[PAIRS - 1]);
         System.out.printf(Locale.ROOT, "the same with both compilers (without %s): %.2f s, %.1f times%n", JavaCommand.QUICK_COMPILER,
                 fullJit, fullJit / one);
         System.out.printf(Locale.ROOT, "8 such runs, --isolation process: %.2f s (%.2f s a run)%n", process, process / 8);
@@ -58,22 +79,34 @@ public final class SweepBench {
     private static double median(List<String> jvm, String main, String... args) throws IOException, InterruptedException {
         double[] times = new double[TRIES];
         for (int i = 0; i < TRIES; i++) {
-            Path dir = Files.createTempDirectory("rp1-sweep-bench");
-            List<String> words = new ArrayList<>();
-            for (String a : args) {
-                words.add(a.equals("OUT") ? dir.resolve("out").toString() : a);
-            }
-            long start = System.nanoTime();
-            Process p = new ProcessBuilder(JavaCommand.of(jvm, main, words.toArray(new String[0])))
-                    .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve("output.txt").toFile())
-                    .start();
-            int status = p.waitFor();
-            times[i] = (System.nanoTime() - start) * 1e-9;
-            if (status != 0) {
-                throw new IllegalStateException(main + " ended with status " + status + "; see " + dir.resolve("output.txt"));
-            }
+            times[i] = time(jvm, main, args);
         }
-        Arrays.sort(times);
-        return times[TRIES / 2];
+        return median(times);
+    }
+
+    private static double median(double[] values) {
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    }
+
+    /** The wall seconds of one run of {@code java JVM MAIN ARGS} in a fresh folder (OUT in it). */
+    private static double time(List<String> jvm, String main, String... args) throws IOException, InterruptedException {
+        Path dir = Files.createTempDirectory("rp1-sweep-bench");
+        List<String> words = new ArrayList<>();
+        for (String a : args) {
+            words.add(a.equals("OUT") ? dir.resolve("out").toString() : a);
+        }
+        long start = System.nanoTime();
+        Process p = new ProcessBuilder(JavaCommand.of(jvm, main, words.toArray(new String[0])))
+                .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve("output.txt").toFile())
+                .start();
+        int status = p.waitFor();
+        double seconds = (System.nanoTime() - start) * 1e-9;
+        if (status != 0) {
+            throw new IllegalStateException(main + " ended with status " + status + "; see " + dir.resolve("output.txt"));
+        }
+        return seconds;
     }
 }
