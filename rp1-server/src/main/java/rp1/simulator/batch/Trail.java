@@ -76,8 +76,9 @@ public record Trail(String robot, List<double[]> pieces) {
         double mostSquared = tolerance * tolerance;
         double mostX = Double.NaN;
         double mostY = Double.NaN;
-        // hypot of the farthest so far once needed (NaN before): a robot backing out along its way in
-        // leaves points exactly as far from the chord as others, each within rounding of the farthest.
+        // hypot of the farthest so far: the tolerance while there is none, NaN until it is needed
+        // after a point was taken on its square alone. A robot backing out along its way in leaves
+        // points exactly as far from the chord as others: equal offsets are passed over unmeasured.
         double most = tolerance;
         for (int i = a + 1; i < b; i++) {
             double px = xy[2 * i] - ax;
