@@ -49,12 +49,14 @@ public final class PngEncoder {
         header[9] = COLOUR_TYPE_RGB;
         // Bytes 10 to 12: deflate compression, adaptive filtering (each row says its filter), no interlace.
         chunk(out, "IHDR", header, header.length);
-        ByteArrayOutputStream compressed = new ByteArrayOutputStream(width * height / 4 + 1024);
+        // Room for a mostly flat picture's compressed rows at first; it grows for others.
+        ByteArrayOutputStream compressed = new ByteArrayOutputStream(
+                (int) Math.min(1 << 22, (long) width * height / 4 + 1024));
         Deflater deflater = new Deflater(Deflater.BEST_SPEED);
         try (DeflaterOutputStream z = new DeflaterOutputStream(compressed, deflater, 1 << 16)) {
-            // A banded raster (a subimage) would have gaps between rows; getRGB reads any layout.
-            int[] pixels = image.getRaster().getDataBuffer() instanceof DataBufferInt d
-                    && image.getRaster().getParent() == null ? d.getData() : image.getRGB(0, 0, width, height, null, 0, width);
+            // A subimage shares its parent's array, with an offset and a longer row: getRGB reads it.
+            int[] pixels = image.getRaster().getDataBuffer() instanceof DataBufferInt d && image.getRaster().getParent() == null
+                    ? d.getData() : image.getRGB(0, 0, width, height, null, 0, width);
             byte[] row = new byte[1 + 3 * width];
             row[0] = NO_FILTER;
             for (int y = 0, i = 0; y < height; y++) {
