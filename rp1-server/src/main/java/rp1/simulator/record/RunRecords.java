@@ -4,8 +4,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.Executor;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 
 import rp1.rossum.RsLogInterface;
@@ -18,26 +18,38 @@ import rp1.simulator.Simulation;
  * process that is killed loses at most its last second; a run at {@code simulationSpeed=max} pays
  * for one write a second, not one per line.
  *
- * <p>The flushes are timed by the JDK's own delay thread, shared by every run in the process, and
- * done on it (a flush hands buffered bytes to the operating system): a sweep's thousand short runs
- * start no thread each for it.
+ * <p>One thread does the flushing for every run in the process (a flush hands buffered bytes to the
+ * operating system): a sweep's thousand short runs start no thread each for it.
  */
 public final class RunRecords implements AutoCloseable {
     /** Wall-clock time between two flushes. */
     private static final long FLUSH_MILLIS = 1000;
-    /** Runs a task a flush interval from now, on the JDK's delay thread. */
-    private static final Executor AFTER_A_WHILE = CompletableFuture.delayedExecutor(FLUSH_MILLIS, TimeUnit.MILLISECONDS,
-            Runnable::run);
 
     private final Recorder recorder;
     private final EventStream events;
-    private volatile boolean closed;
+    /** The periodic flush, or null when nothing is kept. */
+    private final ScheduledFuture<?> flushing;
 
     private RunRecords(Recorder recorder, EventStream events) {
         this.recorder = recorder;
         this.events = events;
-        if (events != null) {
-            AFTER_A_WHILE.execute(this::flushAndWait);
+        flushing = events == null ? null
+                : Flusher.THREAD.scheduleWithFixedDelay(this::flush, FLUSH_MILLIS, FLUSH_MILLIS, TimeUnit.MILLISECONDS);
+    }
+
+    /** The flushing thread, started with the first run that keeps records (a daemon: it never holds the JVM). */
+    private static final class Flusher {
+        static final ScheduledThreadPoolExecutor THREAD = start();
+
+        private static ScheduledThreadPoolExecutor start() {
+            ScheduledThreadPoolExecutor e = new ScheduledThreadPoolExecutor(1, r -> {
+                Thread t = new Thread(r, "rp1-records-flush");
+                t.setDaemon(true);
+                return t;
+            });
+            // A closed run's flush leaves the queue at once rather than when it would have been due.
+            e.setRemoveOnCancelPolicy(true);
+            return e;
         }
     }
 
@@ -81,16 +93,11 @@ public final class RunRecords implements AutoCloseable {
         }
     }
 
-    /** Flushes and comes back a flush interval later, until closed. */
-    private void flushAndWait() {
-        if (closed) {
-            return;
-        }
+    private void flush() {
         events.flush();
         if (recorder != null) {
             recorder.flush();
         }
-        AFTER_A_WHILE.execute(this::flushAndWait);
     }
 
     /**
@@ -99,7 +106,9 @@ public final class RunRecords implements AutoCloseable {
      */
     @Override
     public void close() {
-        closed = true;
+        if (flushing != null) {
+            flushing.cancel(false);
+        }
         if (recorder != null) {
             recorder.close(events);
         }
