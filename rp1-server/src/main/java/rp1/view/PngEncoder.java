@@ -2,6 +2,8 @@ package rp1.view;
 
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
+import java.awt.image.SinglePixelPackedSampleModel;
+import java.awt.image.WritableRaster;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -54,9 +56,7 @@ public final class PngEncoder {
                 (int) Math.min(1 << 22, (long) width * height / 4 + 1024));
         Deflater deflater = new Deflater(Deflater.BEST_SPEED);
         try (DeflaterOutputStream z = new DeflaterOutputStream(compressed, deflater, 1 << 16)) {
-            // A subimage shares its parent's array, with an offset and a longer row: getRGB reads it.
-            int[] pixels = image.getRaster().getDataBuffer() instanceof DataBufferInt d && image.getRaster().getParent() == null
-                    ? d.getData() : image.getRGB(0, 0, width, height, null, 0, width);
+            int[] pixels = packed(image);
             byte[] row = new byte[1 + 3 * width];
             row[0] = NO_FILTER;
             for (int y = 0, i = 0; y < height; y++) {
@@ -73,6 +73,20 @@ public final class PngEncoder {
         }
         chunk(out, "IDAT", compressed.toByteArray(), compressed.size());
         chunk(out, "IEND", new byte[0], 0);
+    }
+
+    /**
+     * The RGB image's pixels row after row, read in place where its raster holds them so (a picture
+     * drawn here), else copied out (a subimage shares its parent's array, with an offset and longer rows).
+     */
+    private static int[] packed(BufferedImage image) {
+        int width = image.getWidth();
+        WritableRaster raster = image.getRaster();
+        if (raster.getParent() == null && raster.getDataBuffer() instanceof DataBufferInt d && d.getOffset() == 0
+                && raster.getSampleModel() instanceof SinglePixelPackedSampleModel m && m.getScanlineStride() == width) {
+            return d.getData();
+        }
+        return image.getRGB(0, 0, width, image.getHeight(), null, 0, width);
     }
 
     /** A chunk: its length, type, data and the CRC-32 of type and data. */

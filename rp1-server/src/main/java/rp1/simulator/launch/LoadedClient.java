@@ -4,7 +4,6 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.InvocationTargetException;
-import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -122,28 +121,24 @@ final class LoadedClient {
         if (!(client instanceof RsClient)) {
             return "it is not an " + RsClient.class.getName();
         }
-        Class<?>[][] parameters = {{}, {InputStream.class, OutputStream.class}};
-        String[] names = {"run", "setInputOutputStreams"};
-        for (int i = 0; i < names.length; i++) {
-            Class<?> declaring = declaringClass(client, names[i], parameters[i]);
-            if (declaring != RsClient.class && declaring != RsProtocol.class) {
-                return "it overrides " + names[i] + "() (in " + declaring.getName() + ")";
-            }
-        }
-        return null;
+        String run = overridden(client, "run");
+        return run != null ? run : overridden(client, "setInputOutputStreams", InputStream.class, OutputStream.class);
     }
 
     /**
-     * The class whose {@code RsRunnable} method the client runs. One public method looked up, not all of
-     * them: a sweep asks for each run's fresh robot class, and listing its hundred-odd public methods
-     * (the library's included) for every run was about 1 % of what a 64-run sweep's runs ran.
+     * "it overrides METHOD() (in CLASS)" if the client's class does, else null. One public method looked
+     * up, not all of them: a sweep asks for each run's fresh robot class, and listing its hundred-odd
+     * public methods (the library's included) for every run was about 1 % of what a 64-run sweep's runs ran.
      */
-    private static Class<?> declaringClass(RsRunnable client, String method, Class<?>[] parameters) {
+    private static String overridden(RsRunnable client, String method, Class<?>... parameters) {
+        Class<?> declaring;
         try {
-            return client.getClass().getMethod(method, parameters).getDeclaringClass();
+            declaring = client.getClass().getMethod(method, parameters).getDeclaringClass();
         } catch (NoSuchMethodException e) {
-            return RsClient.class;
+            return null;
         }
+        return declaring == RsClient.class || declaring == RsProtocol.class ? null
+                : "it overrides " + method + "() (in " + declaring.getName() + ")";
     }
 
     /** The simulation calls this client's handlers directly, through {@code connection}: after initialize() its thread ends. */

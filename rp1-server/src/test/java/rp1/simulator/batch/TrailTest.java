@@ -86,12 +86,8 @@ class TrailTest {
     /** Douglas and Peucker as written down, recursively, every distance by {@link Math#hypot}. */
     private static double[] everyDistanceByHypot(double[] xy, double tolerance) {
         int n = xy.length / 2;
-        if (n < 3) {
-            return xy;
-        }
         boolean[] keep = new boolean[n];
-        keep[0] = true;
-        keep[n - 1] = true;
+        keep[0] = keep[n - 1] = true;
         keepFarthest(xy, 0, n - 1, tolerance, keep);
         return IntStream.range(0, n).filter(i -> keep[i]).flatMap(i -> IntStream.of(2 * i, 2 * i + 1))
                 .mapToDouble(i -> xy[i]).toArray();
