@@ -151,12 +151,17 @@ public final class Cluster implements AutoCloseable {
         return dir;
     }
 
-    /** Kills worker {@code i} (from 1) and its executors at once, as a machine that dies. */
+    /**
+     * Kills worker {@code i} (from 1) and its executors at once, as a machine that dies: the worker
+     * first, so that it cannot tell the master its executors died and be given new ones (failures the
+     * master counts against the application), then the executors it leaves.
+     */
     public void killWorker(int i) throws InterruptedException {
         Process w = workers.get(i - 1);
-        w.descendants().forEach(ProcessHandle::destroyForcibly);
+        List<ProcessHandle> executors = w.descendants().toList();
         w.destroyForcibly();
         w.waitFor();
+        executors.forEach(ProcessHandle::destroyForcibly);
     }
 
     /** Stops the workers (and their executors), then the master. */

@@ -91,8 +91,10 @@ class SparkSweepTest {
     @Order(Integer.MAX_VALUE)
     void aWorkerKilledInTheMiddleOfASweepCostsNoRunAndRepeatsNone() throws Exception {
         Path out = dir.resolve("killed");
+        ByteArrayOutputStream text = new ByteArrayOutputStream();
+        PrintStream print = new PrintStream(text, true, StandardCharsets.UTF_8);
         CompletableFuture<Integer> sweep = CompletableFuture.supplyAsync(() -> SparkSweep.run(args(cluster.masterUrl(),
-                "1-" + RUNS, out), quiet(), quiet(), false, new Interruption()));
+                "1-" + RUNS, out), print, print, false, new Interruption()));
         Path results = out.resolve("results.csv");
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
         while ((!Files.exists(results) || Files.readAllLines(results).size() < 5) && System.nanoTime() < end) {
@@ -100,7 +102,9 @@ class SparkSweepTest {
         }
         assertTrue(Files.readAllLines(results).size() < RUNS, "the worker is killed while runs are left");
         cluster.killWorker(1);
-        assertEquals(0, sweep.get(240, TimeUnit.SECONDS));
+        int status = sweep.get(240, TimeUnit.SECONDS);
+        assertEquals(0, status, () -> text.toString(StandardCharsets.UTF_8) + "\nThe master's log:\n" + log("master.log")
+                + "\nThe other worker's log:\n" + log("worker-2.log"));
         assertEquals(local, rows(out));
     }
 
@@ -142,8 +146,13 @@ class SparkSweepTest {
         return a.toArray(new String[0]);
     }
 
-    private static PrintStream quiet() {
-        return new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+    /** A log of the cluster's, for a failure's message. */
+    private String log(String name) {
+        try {
+            return Files.readString(cluster.dir().resolve(name));
+        } catch (IOException e) {
+            return e.toString();
+        }
     }
 
     /** The rows of results.csv without their wall-clock time, which no two runs share. */
