@@ -146,10 +146,11 @@ class SparkSweepTest {
         return a.toArray(new String[0]);
     }
 
-    /** A log of the cluster's, for a failure's message. */
+    /** The last lines of a log of the cluster's, for a failure's message. */
     private String log(String name) {
         try {
-            return Files.readString(cluster.dir().resolve(name));
+            List<String> lines = Files.readAllLines(cluster.dir().resolve(name));
+            return String.join("\n", lines.subList(Math.max(0, lines.size() - 200), lines.size()));
         } catch (IOException e) {
             return e.toString();
         }
