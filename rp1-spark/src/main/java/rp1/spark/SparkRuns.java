@@ -125,7 +125,7 @@ final class SparkRuns implements RunEngine {
                 return new Ran(RunReport.failed("stopped", ExitStatus.OK), List.of());
             }
             String why = String.valueOf(e.getMessage()).lines().findFirst().orElse(e.toString());
-            return new Ran(RunReport.failed("the cluster could not carry out the run: " + why, ExitStatus.STARTUP_FAILED),
+            return new Ran(RunReport.failed(RunReport.LOST_BY_CLUSTER + why, ExitStatus.STARTUP_FAILED),
                     List.of());
         }
         for (Map.Entry<String, byte[]> f : files.files.entrySet()) {

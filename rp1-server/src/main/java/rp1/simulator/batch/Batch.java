@@ -211,8 +211,9 @@ public final class Batch {
     }
 
     /**
-     * The runs an earlier sweep into {@code out} finished, if it was the same sweep; refused with what
-     * differs if it was another.
+     * The runs an earlier sweep into {@code out} carried out, if it was the same sweep; refused with
+     * what differs if it was another. A row of a run that was not carried out (it could not be started,
+     * or a cluster lost it) is dropped, and the run runs again.
      */
     private static List<Outcome> kept(Path out, SweepSpec spec, List<Run> runs, SweepOptions options)
             throws SweepException {
@@ -231,7 +232,9 @@ public final class Batch {
         for (Run run : runs) {
             for (ResultsCsv.Kept k : rows) {
                 if (k.seed() == run.seed() && k.plan().equals(run.plan()) && k.configuration().equals(run.configuration())) {
-                    kept.add(new Outcome(run, k.report(), k.wallSeconds(), trails(run)));
+                    if (k.report().carriedOut()) {
+                        kept.add(new Outcome(run, k.report(), k.wallSeconds(), trails(run)));
+                    }
                     break;
                 }
             }
@@ -313,7 +316,7 @@ public final class Batch {
         return variedKeys(options);
     }
 
-    /** The runs an earlier sweep into the same folder finished (--resume); they are not run again. */
+    /** The runs an earlier sweep into the same folder carried out (--resume); they are not run again. */
     public List<Outcome> kept() {
         return kept;
     }
@@ -392,7 +395,7 @@ public final class Batch {
             prepareFolder(run);
             ran = engine.run(run);
         } catch (IOException e) {
-            ran = new RunEngine.Ran(RunReport.failed("the run could not be started: " + e.getMessage(),
+            ran = new RunEngine.Ran(RunReport.failed(RunReport.NOT_STARTED + e.getMessage(),
                     ExitStatus.STARTUP_FAILED), List.of());
         }
         RunReport report = ran.report();

@@ -32,9 +32,22 @@ public record RunReport(double endTime, String endReason, int exitStatus, List<R
         robots = List.copyOf(robots);
     }
 
+    /** The start of the reason of a run whose folder or process could not be made. */
+    public static final String NOT_STARTED = "the run could not be started: ";
+    /** The start of the reason of a run a cluster lost (its executors lost it, or the cluster ended the sweep's application). */
+    public static final String LOST_BY_CLUSTER = "the cluster could not carry out the run: ";
+
     /** A run that did not get as far as reporting itself. */
     public static RunReport failed(String reason, int exitStatus) {
         return new RunReport(Double.NaN, reason, exitStatus, List.of());
+    }
+
+    /**
+     * Whether the run was carried out, well or not: false if it could not be started or a cluster lost
+     * it, which says nothing of the run itself, so {@code --resume} runs it again.
+     */
+    public boolean carriedOut() {
+        return !(endReason.startsWith(NOT_STARTED) || endReason.startsWith(LOST_BY_CLUSTER));
     }
 
     /**

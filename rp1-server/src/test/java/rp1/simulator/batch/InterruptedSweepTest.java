@@ -99,6 +99,32 @@ class InterruptedSweepTest {
     }
 
     @Test
+    void resumeRunsAgainARunThatWasNotCarriedOutAndKeepsTheOthers() throws Exception {
+        assertEquals(0, inProcess(sweep("1-3")), sweeps.out() + sweeps.err());
+        // As a cluster leaves the row of a run it lost (rp1-spark): no results, the reason, status 1.
+        List<String> rows = new ArrayList<>(rows());
+        List<String> header = List.of(rows.get(0).split(",", -1));
+        List<String> lost = new ArrayList<>(List.of(rows.get(2).split(",", -1)));
+        lost.set(header.indexOf("reason"), RunReport.LOST_BY_CLUSTER + "executor 1 lost");
+        lost.set(header.indexOf("status"), "1");
+        rows.set(2, String.join(",", lost));
+        Files.write(dir.resolve("out/results.csv"), rows, StandardCharsets.UTF_8);
+        FileTime first = Files.getLastModifiedTime(dir.resolve("out/runs/1-home/" + RunReport.FILE));
+        FileTime third = Files.getLastModifiedTime(dir.resolve("out/runs/3-home/" + RunReport.FILE));
+
+        assertEquals(0, inProcess(sweep("1-3", "--resume")), sweeps.out() + sweeps.err());
+        assertTrue(sweeps.out().contains("; 2 finished before, 1 to run"), sweeps.out());
+        assertEquals(first, Files.getLastModifiedTime(dir.resolve("out/runs/1-home/" + RunReport.FILE)));
+        assertEquals(third, Files.getLastModifiedTime(dir.resolve("out/runs/3-home/" + RunReport.FILE)));
+        rows = rows();
+        assertEquals(4, rows.size(), rows.toString());
+        for (int seed = 1; seed <= 3; seed++) {
+            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",runs/" + seed + "-home,")
+                    && rows.get(seed).contains(",0,max-simulation-time,"), rows.get(seed));
+        }
+    }
+
+    @Test
     void resumeRefusesAFolderOfAnotherSweepSayingWhatDiffers() throws Exception {
         assertEquals(0, inProcess(sweep("1")), sweeps.out() + sweeps.err());
         List<String> before = rows();
