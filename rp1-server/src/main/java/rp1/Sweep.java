@@ -125,6 +125,13 @@ public final class Sweep {
             }
             out.println("rp1.Sweep: " + (outcomes.size() - failed) + " runs ended as asked, " + failed + " failed; "
                     + batch.out().resolve("results.csv") + ", " + summary + ", " + batch.out().resolve(SweepIndex.NAME));
+            long notCarriedOut = outcomes.stream().filter(o -> !o.report().carriedOut()).count();
+            if (notCarriedOut > 0) {
+                err.println("rp1.Sweep: " + notCarriedOut + " of the failed runs " + (notCarriedOut == 1 ? "was" : "were")
+                        + " never carried out (not started, or lost by the cluster; results.csv says why). To run "
+                        + (notCarriedOut == 1 ? "it" : "them") + " again, add --resume to the same command:\n  rp1.Sweep "
+                        + resumeArguments(args));
+            }
             return failed == 0 ? 0 : RUN_FAILED;
         } catch (SweepException | IOException e) {
             err.println("rp1.Sweep: " + e.getMessage());

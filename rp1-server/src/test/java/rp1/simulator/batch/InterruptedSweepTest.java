@@ -125,6 +125,24 @@ class InterruptedSweepTest {
     }
 
     @Test
+    void aRunThatCouldNotStartIsARowTheSweepSaysHowToRunAgain() throws Exception {
+        // A file where the second run's folder should be: that run cannot be started.
+        Files.createDirectories(dir.resolve("out/runs"));
+        Files.writeString(dir.resolve("out/runs/2-home"), "in the way");
+        String[] args = sweep("1-3");
+        assertEquals(Sweep.RUN_FAILED, inProcess(args), sweeps.out() + sweeps.err());
+        assertTrue(rows().get(2).contains(RunReport.NOT_STARTED), rows().get(2));
+        assertTrue(sweeps.err().contains("rp1.Sweep: 1 of the failed runs was never carried out (not started, or lost"
+                + " by the cluster; results.csv says why). To run it again, add --resume to the same command:\n  rp1.Sweep "
+                + String.join(" ", args) + " --resume"), sweeps.err());
+
+        Files.delete(dir.resolve("out/runs/2-home"));
+        assertEquals(0, inProcess(sweep("1-3", "--resume")), sweeps.out() + sweeps.err());
+        assertTrue(sweeps.out().contains("; 2 finished before, 1 to run"), sweeps.out());
+        assertTrue(rows().get(2).contains(",0,max-simulation-time,"), rows().get(2));
+    }
+
+    @Test
     void resumeRefusesAFolderOfAnotherSweepSayingWhatDiffers() throws Exception {
         assertEquals(0, inProcess(sweep("1")), sweeps.out() + sweeps.err());
         List<String> before = rows();
