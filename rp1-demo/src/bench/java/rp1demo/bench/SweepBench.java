@@ -26,7 +26,7 @@ public final class SweepBench {
     /** Pairs of the one run and the 64-run sweep, timed alternately. */
     private static final int PAIRS = 8;
     /** The options bin/rp1 starts a simulation's JVM with. */
-    private static final List<String> SIMULATOR = JavaCommand.SIMULATOR_OPTIONS;
+    private static final List<String> SIMULATOR = JavaCommand.simulatorOptions();
     /** The options bin/rp1 starts a sweep's JVM with on this machine. */
     private static final List<String> QUICK = JavaCommand.sweepOptions(Runtime.getRuntime().availableProcessors());
     /** The same with both compilers (and the JVM's own number of compiler threads, which both need). */

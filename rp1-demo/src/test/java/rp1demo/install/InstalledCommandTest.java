@@ -158,10 +158,13 @@ class InstalledCommandTest {
         String rp1 = Paths.get(INSTALL, "bin", "rp1").toString();
         Result simulation = runWith("-XX:+PrintCommandLineFlags", rp1, "-p", "mybot.ini");
         assertEquals(1, simulation.status(), simulation.output());
-        JavaCommand.SIMULATOR_OPTIONS.forEach(o -> assertTrue(simulation.output().contains(o), o + " in " + simulation.output()));
+        JavaCommand.simulatorOptions().forEach(o -> assertTrue(simulation.output().contains(o), o + " in " + simulation.output()));
+        assertEquals(JavaCommand.simulatorOptions().contains(JavaCommand.HUGE_PAGES),
+                simulation.output().contains(JavaCommand.HUGE_PAGES), "huge pages as the kernel gives them: " + simulation.output());
         Result sweep = runWith("-XX:+PrintCommandLineFlags", rp1, "sweep", "-h");
         assertEquals(0, sweep.status(), sweep.output());
         JavaCommand.SWEEP_OPTIONS.forEach(o -> assertTrue(sweep.output().contains(o), o + " in " + sweep.output()));
+        assertFalse(sweep.output().contains(JavaCommand.HUGE_PAGES), sweep.output());
         int processors = Integer.parseInt(run("getconf", "_NPROCESSORS_ONLN").output().trim());
         assertEquals(processors <= JavaCommand.FEW_PROCESSORS, sweep.output().contains(JavaCommand.ONE_COMPILER_THREAD),
                 processors + " processors: " + sweep.output());

@@ -12,7 +12,7 @@ import rp1.simulator.launch.JavaCommand;
 
 /**
  * A benchmark part in a JVM of its own (its memory figures are then its own), on the bench's class path,
- * with the options the installed simulator runs with ({@link JavaCommand#SIMULATOR_OPTIONS}).
+ * with the options the installed simulator runs with ({@link JavaCommand#simulatorOptions()}).
  */
 final class Child {
     private Child() {
@@ -21,7 +21,7 @@ final class Child {
     /** Runs {@code main} with {@code args} under {@code -Xmx}; each output line goes to {@code lines}; returns the exit status. */
     static int run(String xmx, Class<?> main, Consumer<String> lines, String... args)
             throws IOException, InterruptedException {
-        List<String> options = new ArrayList<>(JavaCommand.SIMULATOR_OPTIONS);
+        List<String> options = new ArrayList<>(JavaCommand.simulatorOptions());
         options.addAll(List.of("-Xmx" + xmx, "-Xss4m"));
         Process p = new ProcessBuilder(JavaCommand.of(options, main.getName(), args)).redirectErrorStream(true).start();
         try (BufferedReader in = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {

@@ -30,7 +30,7 @@ final class ColdStart {
             Files.write(dir.resolve("cold.ini"), String.join("\n", "floorPlanFileName=WhiteRoom.txt", "enableGUI=false",
                     "port=" + PORT, "randomSeed=1", "").getBytes(
                     StandardCharsets.UTF_8));
-            List<String> command = JavaCommand.of(JavaCommand.SIMULATOR_OPTIONS, "rp1.Server", "-p", "cold.ini");
+            List<String> command = JavaCommand.of(JavaCommand.simulatorOptions(), "rp1.Server", "-p", "cold.ini");
             long launched = System.nanoTime();
             Process server = new ProcessBuilder(command).directory(dir.toFile())
                     .redirectOutput(dir.resolve("out.txt").toFile()).redirectErrorStream(true).start();

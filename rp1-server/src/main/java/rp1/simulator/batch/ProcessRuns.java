@@ -45,7 +45,7 @@ final class ProcessRuns implements RunEngine {
     }
 
     private static List<String> jvmOptions() {
-        List<String> options = new ArrayList<>(JavaCommand.SIMULATOR_OPTIONS);
+        List<String> options = new ArrayList<>(JavaCommand.simulatorOptions());
         options.add(JavaCommand.QUICK_COMPILER);
         return List.copyOf(options);
     }
