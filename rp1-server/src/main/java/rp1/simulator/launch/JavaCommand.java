@@ -17,7 +17,8 @@ public final class JavaCommand {
      * thousand robots), which a stop-the-world collection of the young generation clears in
      * milliseconds; G1's concurrent machinery (its write barriers, its refinement) cost the simulation
      * thread 15–20 % with a thousand robots and more, and it kept 60 % more memory resident
-     * (docs/performance.md).
+     * (docs/performance.md). These are given on every machine; {@link #simulatorOptions()} adds what
+     * depends on the machine.
      */
     public static final List<String> SIMULATOR_OPTIONS = List.of("-XX:+UseSerialGC");
 
