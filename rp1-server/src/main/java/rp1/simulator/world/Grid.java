@@ -16,13 +16,23 @@ final class Grid {
     private static final double INDEX_CELL = 1.0;
     /** The most cells an index's grid has, whatever its area. */
     private static final int INDEX_MAX_CELLS = 1 << 16;
+    /** How many items a cell keeps in {@link #slots}: a robot's neighbourhood in metre cells holds one or two. */
+    private static final int IN_PLACE = 4;
 
     private final double minX;
     private final double minY;
     private final double cell;
     private final int cols;
     private final int rows;
-    private final int[][] cells;
+    /**
+     * Each cell's first {@link #IN_PLACE} items, cell after cell: a query's cells along a row lie side
+     * by side in memory. With ten thousand robots an array per cell, somewhere in the heap, was a
+     * cache miss per cell looked at.
+     */
+    private final int[] slots;
+    /** Per cell, the items after its first {@link #IN_PLACE} (null until a cell has more). */
+    private final int[][] overflow;
+    /** Per cell, how many items it lists. */
     private final int[] counts;
     private int[] marks = new int[16];
     private int stamp;
@@ -56,7 +66,8 @@ final class Grid {
         this.cell = size;
         this.cols = (int) cellsAcross(width, size);
         this.rows = (int) cellsAcross(height, size);
-        this.cells = new int[cols * rows][];
+        this.slots = new int[cols * rows * IN_PLACE];
+        this.overflow = new int[cols * rows][];
         this.counts = new int[cols * rows];
     }
 
@@ -72,7 +83,7 @@ final class Grid {
 
     /** How many cells the grid has. */
     int cellCount() {
-        return cells.length;
+        return counts.length;
     }
 
     private int col(double x) {
@@ -108,11 +119,12 @@ final class Grid {
         for (int r = r0; r <= r1; r++) {
             for (int c = c0; c <= c1; c++) {
                 int index = r * cols + c;
-                int[] list = cells[index];
                 int n = counts[index];
                 for (int i = 0; i < n; i++) {
-                    if (list[i] == id) {
-                        System.arraycopy(list, i + 1, list, i, n - i - 1);
+                    if (item(index, i) == id) {
+                        for (int j = i; j + 1 < n; j++) {
+                            setItem(index, j, item(index, j + 1));
+                        }
                         counts[index] = n - 1;
                         break;
                     }
@@ -136,14 +148,29 @@ final class Grid {
     }
 
     private void add(int index, int id) {
-        int[] list = cells[index];
         int n = counts[index];
-        if (list == null || n == list.length) {
-            list = list == null ? new int[4] : Arrays.copyOf(list, n * 2);
-            cells[index] = list;
+        if (n >= IN_PLACE) {
+            int[] more = overflow[index];
+            int k = n - IN_PLACE;
+            if (more == null || k == more.length) {
+                overflow[index] = more == null ? new int[IN_PLACE] : Arrays.copyOf(more, 2 * k);
+            }
         }
-        list[n] = id;
+        setItem(index, n, id);
         counts[index] = n + 1;
+    }
+
+    /** The {@code i}th item of cell {@code index} (i below its count). */
+    private int item(int index, int i) {
+        return i < IN_PLACE ? slots[index * IN_PLACE + i] : overflow[index][i - IN_PLACE];
+    }
+
+    private void setItem(int index, int i, int id) {
+        if (i < IN_PLACE) {
+            slots[index * IN_PLACE + i] = id;
+        } else {
+            overflow[index][i - IN_PLACE] = id;
+        }
     }
 
     /** What a query found. */
@@ -255,13 +282,23 @@ final class Grid {
     }
 
     private void visitCell(int index, int mark, Visitor visitor) {
-        int[] list = cells[index];
-        for (int i = 0, n = counts[index]; i < n; i++) {
-            int id = list[i];
-            if (marks[id] != mark) {
-                marks[id] = mark;
-                visitor.visit(id);
+        int n = counts[index];
+        int base = index * IN_PLACE;
+        for (int i = 0, inPlace = Math.min(n, IN_PLACE); i < inPlace; i++) {
+            visitItem(slots[base + i], mark, visitor);
+        }
+        if (n > IN_PLACE) {
+            int[] more = overflow[index];
+            for (int i = 0; i < n - IN_PLACE; i++) {
+                visitItem(more[i], mark, visitor);
             }
+        }
+    }
+
+    private void visitItem(int id, int mark, Visitor visitor) {
+        if (marks[id] != mark) {
+            marks[id] = mark;
+            visitor.visit(id);
         }
     }
 

@@ -65,6 +65,71 @@ class GridTest {
         }
     }
 
+    /**
+     * A crowd in a few cells (cells listing a dozen items and more, items coming and going) is visited
+     * exactly as lists per cell would visit it: cell after cell along each row, each cell's items in
+     * the order they came, each item once.
+     */
+    @Test
+    void crowdedCellsAreVisitedAsListsPerCellWouldVisitThem() {
+        double side = 4.0;
+        Grid grid = new Grid(new RsRectangle(0, 0, side, side), 1.0, MAX_CELLS);
+        List<List<Integer>> lists = new ArrayList<>();
+        for (int c = 0; c < 16; c++) {
+            lists.add(new ArrayList<>());
+        }
+        java.util.Random random = new java.util.Random(17);
+        double[][] boxes = new double[80][];
+        for (int step = 0; step < 20_000; step++) {
+            int id = random.nextInt(boxes.length);
+            if (boxes[id] != null) {
+                double[] old = boxes[id];
+                grid.remove(id, old[0], old[1], old[2], old[3]);
+                for (int cell : cellsOf(old)) {
+                    lists.get(cell).remove(Integer.valueOf(id));
+                }
+            }
+            double[] box = box(random, random.nextDouble() * side, random.nextDouble() * side);
+            grid.insert(id, box[0], box[1], box[2], box[3]);
+            for (int cell : cellsOf(box)) {
+                lists.get(cell).add(id);
+            }
+            boxes[id] = box;
+            double qx = random.nextDouble() * side;
+            double qy = random.nextDouble() * side;
+            double w = random.nextDouble() * 2;
+            List<Integer> expected = new ArrayList<>();
+            for (int cell : cellsOf(new double[] {qx, qy, qx + w, qy + w})) {
+                for (int item : lists.get(cell)) {
+                    if (!expected.contains(item)) {
+                        expected.add(item);
+                    }
+                }
+            }
+            assertEquals(expected, query(grid, qx, qy, qx + w, qy + w), "step " + step);
+        }
+        int most = 0;
+        for (List<Integer> list : lists) {
+            most = Math.max(most, list.size());
+        }
+        assertTrue(most > 12, "the crowd fills cells: " + most);
+    }
+
+    /** The cells of a 4 x 4 grid of metre cells from (0, 0) that the box covers, row by row. */
+    private static List<Integer> cellsOf(double[] box) {
+        List<Integer> cells = new ArrayList<>();
+        for (int r = clamp(box[1]); r <= clamp(box[3]); r++) {
+            for (int c = clamp(box[0]); c <= clamp(box[2]); c++) {
+                cells.add(r * 4 + c);
+            }
+        }
+        return cells;
+    }
+
+    private static int clamp(double v) {
+        return Math.max(0, Math.min(3, (int) Math.floor(v)));
+    }
+
     private static double[] box(java.util.Random random, double x, double y) {
         double w = 0.1 + 0.5 * random.nextDouble();
         return new double[] {x, y, x + w, y + w};
