@@ -89,6 +89,14 @@ public final class Robot {
         return sight.mightSee(pose, otherPose.m13, otherPose.m23, other.shapes.reach() + 1.0e-9);
     }
 
+    /**
+     * Whether, with this robot at {@code pose}, a reading of its range or target sensors could depend
+     * on anything within {@code radius} of (x, y).
+     */
+    boolean mightSeeAround(RsTransform pose, double x, double y, double radius) {
+        return sight.mightSee(pose, x, y, radius);
+    }
+
     /** The pose at {@code time} under the current motion (identity before the first placement). */
     RsTransform poseAt(double time) {
         RsMotion m = body.getMotion();

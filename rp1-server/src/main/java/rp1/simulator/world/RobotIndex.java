@@ -73,15 +73,44 @@ final class RobotIndex {
 
     /** The robots whose boxes overlap [x0, x1] x [y0, y1], in joining order. */
     List<Robot> near(double x0, double y0, double x1, double y1) {
+        return near(x0, y0, x1, y1, null);
+    }
+
+    /**
+     * The robots {@link #near(double, double, double, double)} finds, less those whose box's circle
+     * {@code reach} turns down: a robot lies within its box, so its box tells whether something of it
+     * could be within reach without reading the robot itself (with ten thousand robots, reading a
+     * robot's motion is a cache miss or more, and a sensor's ray passes near few of the robots around).
+     */
+    List<Robot> near(double x0, double y0, double x1, double y1, Reach reach) {
         int count = grid.collect(x0, y0, x1, y1);
         List<Robot> out = new ArrayList<>(count);
         for (int i = 0; i < count; i++) {
             int n = grid.hit(i);
             int b = 4 * n;
-            if (boxes[b] <= x1 && x0 <= boxes[b + 2] && boxes[b + 1] <= y1 && y0 <= boxes[b + 3]) {
+            if (boxes[b] <= x1 && x0 <= boxes[b + 2] && boxes[b + 1] <= y1 && y0 <= boxes[b + 3]
+                    && (reach == null || reach.within(boxes, b))) {
                 out.add(byNumber[n]);
             }
         }
         return out;
+    }
+
+    /** A test of what could be within reach of something: the circle about a filed box. */
+    @FunctionalInterface
+    interface Reach {
+        /** Slack on a box's circle: far above the rounding of its centre and radius. */
+        double SLACK = 1.0e-9;
+
+        /** Whether something within {@code radius} of (x, y) could be within reach. */
+        boolean within(double x, double y, double radius);
+
+        /** The same for the circle through the corners of the box at {@code b} in {@code boxes}. */
+        default boolean within(double[] boxes, int b) {
+            double hw = 0.5 * (boxes[b + 2] - boxes[b]);
+            double hh = 0.5 * (boxes[b + 3] - boxes[b + 1]);
+            double r = Math.sqrt(hw * hw + hh * hh);
+            return within(boxes[b] + hw, boxes[b + 1] + hh, r + SLACK * (1.0 + r));
+        }
     }
 }
