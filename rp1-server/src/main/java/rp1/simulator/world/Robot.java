@@ -71,9 +71,12 @@ public final class Robot {
         trails = Collections.unmodifiableList(t);
     }
 
-    /** How far from the body origin the range and target sensors reach, metres (0 without any). */
-    double sensorReach() {
-        return sight.reach();
+    /**
+     * The box, with the robot at {@code pose}, of all its range and target sensors could look at (see
+     * {@link Sight#box}); one array, valid until the next call.
+     */
+    double[] sightBox(RsTransform pose) {
+        return sight.box(pose);
     }
 
     /** Whether the robot has range or target sensors, which other robots can affect. */

@@ -20,6 +20,11 @@ final class Sight {
     /** Per target sensor: detector x, detector y, maximum range. */
     private final double[][] fields;
     private final double reach;
+    /**
+     * How far {@link #box} reaches beyond the rays and fields, metres: far above the rounding between
+     * this class's rays and the sensors' own, and above the slack of {@link #mightSee}'s callers.
+     */
+    static final double BOX_MARGIN = 1.0e-6;
     /** The rays' ends and the fields' centres at the pose {@link #at} (once {@link #aimed}). */
     private final double[] rayX0;
     private final double[] rayY0;
@@ -29,6 +34,8 @@ final class Sight {
     private final double[] fieldY;
     private final LastPose at = new LastPose();
     private boolean aimed;
+    /** The box of {@link #box}: x0, y0, x1, y1 at the pose {@link #at}. */
+    private final double[] box = new double[4];
 
     Sight(RsBody body) {
         List<double[]> r = new ArrayList<>();
@@ -81,6 +88,37 @@ final class Sight {
             }
         }
         return false;
+    }
+
+    /**
+     * The box, with the robot at {@code pose}, of all its sensors could look at: each ray from end to
+     * end and each target sensor's disc, grown by {@link #BOX_MARGIN}. Walls and robots wholly outside it
+     * can neither block a ray nor hide a target. One array, valid until the next call.
+     */
+    double[] box(RsTransform pose) {
+        aim(pose);
+        double x0 = Double.POSITIVE_INFINITY;
+        double y0 = Double.POSITIVE_INFINITY;
+        double x1 = Double.NEGATIVE_INFINITY;
+        double y1 = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < rays.length; i++) {
+            x0 = Math.min(x0, Math.min(rayX0[i], rayX1[i]));
+            y0 = Math.min(y0, Math.min(rayY0[i], rayY1[i]));
+            x1 = Math.max(x1, Math.max(rayX0[i], rayX1[i]));
+            y1 = Math.max(y1, Math.max(rayY0[i], rayY1[i]));
+        }
+        for (int i = 0; i < fields.length; i++) {
+            double r = fields[i][2];
+            x0 = Math.min(x0, fieldX[i] - r);
+            y0 = Math.min(y0, fieldY[i] - r);
+            x1 = Math.max(x1, fieldX[i] + r);
+            y1 = Math.max(y1, fieldY[i] + r);
+        }
+        box[0] = x0 - BOX_MARGIN;
+        box[1] = y0 - BOX_MARGIN;
+        box[2] = x1 + BOX_MARGIN;
+        box[3] = y1 + BOX_MARGIN;
+        return box;
     }
 
     /**

@@ -112,19 +112,21 @@ final class Surroundings {
     }
 
     /**
-     * What blocks the robot's range and target sensors at {@code time}: the walls within the sensors'
-     * reach, plus the other robots on the floor within it. A robot without such sensors needs none.
+     * What blocks the robot's range and target sensors at {@code time}: the walls near what the sensors
+     * look at from where the robot is (its rays, its target sensors' discs), plus the other robots on
+     * the floor that the sensors could see. A robot without such sensors needs none. A wall that crosses
+     * no ray and hides no target changes no reading, and the walls kept are in the order they were.
      */
     RsWall[] obstaclesForSensors(Robot r, double time) {
         if (!r.hasWallSensors()) {
             return NO_WALLS;
         }
         RsTransform p = r.pose();
-        double reach = r.sensorReach();
-        double x0 = p.m13 - reach;
-        double y0 = p.m23 - reach;
-        double x1 = p.m13 + reach;
-        double y1 = p.m23 + reach;
+        double[] box = r.sightBox(p);
+        double x0 = box[0];
+        double y0 = box[1];
+        double x1 = box[2];
+        double y1 = box[3];
         RsWall[] nearWalls = walls.near(x0, y0, x1, y1);
         if (!robotsCanMeet()) {
             return nearWalls;
