@@ -89,7 +89,7 @@ public final class Robot {
      * depend on {@code other} at {@code otherPose} (see it, or be blocked by it).
      */
     boolean mightSee(RsTransform pose, Robot other, RsTransform otherPose) {
-        return sight.mightSee(pose, otherPose.m13, otherPose.m23, other.shapes.reach() + 1.0e-9);
+        return mightSeeAround(pose, otherPose.m13, otherPose.m23, other.shapes.reach() + 1.0e-9);
     }
 
     /**

@@ -89,28 +89,28 @@ final class RobotIndex {
             int n = grid.hit(i);
             int b = 4 * n;
             if (boxes[b] <= x1 && x0 <= boxes[b + 2] && boxes[b + 1] <= y1 && y0 <= boxes[b + 3]
-                    && (reach == null || reach.within(boxes, b))) {
+                    && (reach == null || reachesBox(reach, b))) {
                 out.add(byNumber[n]);
             }
         }
         return out;
     }
 
-    /** A test of what could be within reach of something: the circle about a filed box. */
+    /**
+     * Whether {@code reach} takes in the circle through the corners of the box at {@code b}, grown by
+     * a slack far above the rounding of its centre and radius.
+     */
+    private boolean reachesBox(Reach reach, int b) {
+        double hw = 0.5 * (boxes[b + 2] - boxes[b]);
+        double hh = 0.5 * (boxes[b + 3] - boxes[b + 1]);
+        double r = Math.sqrt(hw * hw + hh * hh);
+        return reach.within(boxes[b] + hw, boxes[b + 1] + hh, r + 1.0e-9 * (1.0 + r));
+    }
+
+    /** A test of what could be within reach of something. */
     @FunctionalInterface
     interface Reach {
-        /** Slack on a box's circle: far above the rounding of its centre and radius. */
-        double SLACK = 1.0e-9;
-
         /** Whether something within {@code radius} of (x, y) could be within reach. */
         boolean within(double x, double y, double radius);
-
-        /** The same for the circle through the corners of the box at {@code b} in {@code boxes}. */
-        default boolean within(double[] boxes, int b) {
-            double hw = 0.5 * (boxes[b + 2] - boxes[b]);
-            double hh = 0.5 * (boxes[b + 3] - boxes[b + 1]);
-            double r = Math.sqrt(hw * hw + hh * hh);
-            return within(boxes[b] + hw, boxes[b + 1] + hh, r + SLACK * (1.0 + r));
-        }
     }
 }

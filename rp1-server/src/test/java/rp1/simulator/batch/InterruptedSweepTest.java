@@ -47,6 +47,16 @@ class InterruptedSweepTest {
         return sweeps.run(args);
     }
 
+    /** results.csv has a row for each of seeds 1 to {@code seeds}, in order, each run ended at its time limit. */
+    private void assertEveryRunEndedAsAsked(int seeds) throws IOException {
+        List<String> rows = rows();
+        assertEquals(seeds + 1, rows.size(), rows.toString());
+        for (int seed = 1; seed <= seeds; seed++) {
+            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",runs/" + seed + "-home,")
+                    && rows.get(seed).contains(",0,max-simulation-time,"), rows.get(seed));
+        }
+    }
+
     private List<String> rows() throws IOException {
         Path results = dir.resolve("out/results.csv");
         return Files.exists(results) ? Files.readAllLines(results, StandardCharsets.UTF_8) : List.of();
@@ -90,12 +100,7 @@ class InterruptedSweepTest {
         assertTrue(sweeps.out().contains("; 1 finished before, 3 to run"), sweeps.out());
         assertEquals(firstRun, Files.getLastModifiedTime(dir.resolve("out/runs/1-home/" + RunReport.FILE)),
                 "the run that had finished was not run again");
-        rows = rows();
-        assertEquals(5, rows.size(), rows.toString());
-        for (int seed = 1; seed <= 4; seed++) {
-            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",runs/" + seed + "-home,")
-                    && rows.get(seed).contains(",0,max-simulation-time,"), rows.get(seed));
-        }
+        assertEveryRunEndedAsAsked(4);
     }
 
     @Test
@@ -116,12 +121,7 @@ class InterruptedSweepTest {
         assertTrue(sweeps.out().contains("; 2 finished before, 1 to run"), sweeps.out());
         assertEquals(first, Files.getLastModifiedTime(dir.resolve("out/runs/1-home/" + RunReport.FILE)));
         assertEquals(third, Files.getLastModifiedTime(dir.resolve("out/runs/3-home/" + RunReport.FILE)));
-        rows = rows();
-        assertEquals(4, rows.size(), rows.toString());
-        for (int seed = 1; seed <= 3; seed++) {
-            assertTrue(rows.get(seed).startsWith(seed + "," + dir.resolve("home.txt") + ",runs/" + seed + "-home,")
-                    && rows.get(seed).contains(",0,max-simulation-time,"), rows.get(seed));
-        }
+        assertEveryRunEndedAsAsked(3);
     }
 
     @Test
