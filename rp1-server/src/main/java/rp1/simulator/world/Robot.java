@@ -157,11 +157,19 @@ public final class Robot {
 
     /** Upper bound of the speed of any point of the robot's shapes under its current motion, m/s. */
     double speedBound() {
+        return speedBound(shapes.reach());
+    }
+
+    /**
+     * Upper bound of the speed, under the robot's current motion, of any point of it within
+     * {@code radius} of the body origin, m/s: 0 at rest.
+     */
+    double speedBound(double radius) {
         RsMotion m = body.getMotion();
         if (!moving || m == null) {
             return 0.0;
         }
-        return Math.abs(m.getVelocity()) + Math.abs(m.getTurnRate()) * shapes.reach();
+        return Math.abs(m.getVelocity()) + Math.abs(m.getTurnRate()) * radius;
     }
 
     /** The pose at the motion's current time (identity before the first placement). */

@@ -45,6 +45,11 @@ final class RobotContacts {
      * mercy of rounding.
      */
     private static final double TOUCHING = 1.0e-3;
+    /**
+     * Added to how far a sensor's distance can change over a narrowed interval before it counts as
+     * settled, metres: far above the rounding of poses and distances.
+     */
+    private static final double SETTLED_SLACK = 1.0e-9;
 
     private final Surroundings surroundings;
     /** By robot number: the motion task's run in which the robot's current motion started (-1: none). */
@@ -136,7 +141,7 @@ final class RobotContacts {
         }
         double gap = gap(a, b, from);
         if (gap == 0.0) {
-            stop(a, b, from, from, stepper);
+            stop(a, b, from, touching(a, b, from, 0.0), touching(b, a, from, 0.0), from, stepper);
             return;
         }
         double clear = from;
@@ -153,14 +158,13 @@ final class RobotContacts {
             }
         }
         if (gap == 0.0) {
-            stop(a, b, narrow(a, b, clear, t), from, stepper);
+            narrowAndStop(a, b, clear, t, from, stepper);
             return;
         }
         double step = SAMPLE_SPACING / speed;
         for (t = Math.min(to, clear + step); ; t = Math.min(to, t + step)) {
             if (touch(a, b, t)) {
-                double contact = narrow(a, b, clear, t);
-                stop(a, b, contact, from, stepper);
+                narrowAndStop(a, b, clear, t, from, stepper);
                 return;
             }
             clear = t;
@@ -197,9 +201,37 @@ final class RobotContacts {
         return Math.hypot(pa.m13 - pb.m13, pa.m23 - pb.m23) - a.shapes().reach() - b.shapes().reach();
     }
 
-    /** The first touching time in (clear, touching], to {@link #PRECISION}. */
-    private static double narrow(Robot a, Robot b, double clear, double touching) {
+    /**
+     * Narrows the first touching time in (clear, touching] down by bisection and stops the pair there.
+     *
+     * <p>Only three things depend on the contact time: each moving robot's stop time (a whole
+     * millisecond before it), whether it is before the motion's end, and which contact sensors are
+     * within {@link #TOUCHING} of the other robot. The bisection stops as soon as those are the same
+     * wherever in the interval the contact lies, which is usually long before the interval is down to
+     * {@link #PRECISION}: the stop time can only grow with the contact time, so equal stop times at both
+     * ends hold throughout, and a sensor's distance to the other robot changes no faster than their
+     * points move, so a distance far enough from {@code TOUCHING} at one end is on the same side
+     * throughout. The halvings it does are the same as those of a full bisection, so what it decides is
+     * what a full bisection would.
+     */
+    private void narrowAndStop(Robot a, Robot b, double clear, double touching, double now, MotionStepper stepper) {
+        // How fast a sensor's distance to the other robot can change: its points' speed plus the other's.
+        double speedA = a.speedBound(a.shapes().contactSensors().reach()) + b.speedBound();
+        double speedB = b.speedBound(b.shapes().contactSensors().reach()) + a.speedBound();
+        boolean sensorsUnsettled = false;
         while (touching - clear > PRECISION) {
+            if (!sensorsUnsettled && sameStop(a, clear, touching, now) && sameStop(b, clear, touching, now)) {
+                double width = touching - clear;
+                List<RsBodyContactSensor> touchingA = touching(a, b, touching, speedA * width + SETTLED_SLACK);
+                List<RsBodyContactSensor> touchingB = touchingA == null
+                        ? null : touching(b, a, touching, speedB * width + SETTLED_SLACK);
+                if (touchingB != null) {
+                    stop(a, b, touching, touchingA, touchingB, now, stepper);
+                    return;
+                }
+                // A sensor at about TOUCHING from the other robot: bisect to the end, as before.
+                sensorsUnsettled = true;
+            }
             double mid = 0.5 * (clear + touching);
             if (touch(a, b, mid)) {
                 touching = mid;
@@ -207,7 +239,12 @@ final class RobotContacts {
                 clear = mid;
             }
         }
-        return touching;
+        stop(a, b, touching, touching(a, b, touching, 0.0), touching(b, a, touching, 0.0), now, stepper);
+    }
+
+    /** Whether the robot's stop for a contact at {@code clear} and at {@code touching} is the same. */
+    private static boolean sameStop(Robot r, double clear, double touching, double now) {
+        return Double.compare(stopTime(r, clear, now), stopTime(r, touching, now)) == 0;
     }
 
     private static boolean touch(Robot a, Robot b, double t) {
@@ -230,25 +267,38 @@ final class RobotContacts {
      * sensors of both that touch the other robot go hot with its name: a stopped robot's when its
      * motion ends, a robot at rest's at the time the other one stops.
      */
-    private void stop(Robot a, Robot b, double contact, double now, MotionStepper stepper) {
-        List<RsBodyContactSensor> touchingA = touching(a, b, contact);
-        List<RsBodyContactSensor> touchingB = touching(b, a, contact);
+    private void stop(Robot a, Robot b, double contact, List<RsBodyContactSensor> touchingA,
+                      List<RsBodyContactSensor> touchingB, double now, MotionStepper stepper) {
         double stopA = stopOne(a, contact, now);
         double stopB = stopOne(b, contact, now);
         press(a, b, touchingA, stopA, stopB, stepper);
         press(b, a, touchingB, stopB, stopA, stepper);
     }
 
-    /** Cuts the robot's motion before the contact; returns the stop time, or NaN if it was not moving into it. */
-    private static double stopOne(Robot r, double contact, double now) {
+    /**
+     * When the robot stops for a contact at {@code contact}: the last whole millisecond of its motion
+     * before it (not before {@code now}); NaN if it is not moving or its motion ends first. It never
+     * decreases as {@code contact} grows (each step of it is monotonic, rounding included).
+     */
+    private static double stopTime(Robot r, double contact, double now) {
         RsMotion m = r.motion();
         if (!r.isMoving() || m == null) {
             return Double.NaN;
         }
         double stopAt = Math.max(now, m.time0 + Math.max(0.0, Math.floor(1000.0 * (contact - m.time0) - 0.1) / 1000.0));
-        if (stopAt >= m.time1) {
+        return stopAt >= m.time1 ? Double.NaN : stopAt;
+    }
+
+    /**
+     * Cuts the robot's motion before the contact; returns the stop time, or NaN if it was not moving into it.
+     * The motion's collision time is the contact as far as it was narrowed down.
+     */
+    private static double stopOne(Robot r, double contact, double now) {
+        double stopAt = stopTime(r, contact, now);
+        if (Double.isNaN(stopAt)) {
             return Double.NaN;
         }
+        RsMotion m = r.motion();
         m.stopMotionAtTime(stopAt);
         m.collision = true;
         m.collisionTime = contact - m.time0;
@@ -256,15 +306,26 @@ final class RobotContacts {
         return stopAt;
     }
 
-    /** The robot's contact sensors that touch the other robot at the moment of contact (both motions as requested). */
-    private static List<RsBodyContactSensor> touching(Robot r, Robot other, double contact) {
+    /**
+     * The robot's contact sensors that touch the other robot at time {@code contact} (both motions as
+     * requested), or null if one of them is within {@code margin} of touching and not touching by more
+     * than that (with a margin of 0, never null).
+     */
+    private static List<RsBodyContactSensor> touching(Robot r, Robot other, double contact, double margin) {
+        RobotShapes.ContactSensors sensors = r.shapes().contactSensors();
+        List<RsBodyContactSensor> touching = new ArrayList<>();
+        if (sensors.count() == 0) {
+            return touching;
+        }
         Outlines otherShapes = outlinesAt(other, contact);
         RsTransform pose = r.motion().getPoseAtTime(contact);
-        List<RsBodyContactSensor> touching = new ArrayList<>();
-        RobotShapes.ContactSensors sensors = r.shapes().contactSensors();
         for (int i = 0; i < sensors.count(); i++) {
-            if (sensors.outlinesAt(i, pose).distance(otherShapes, TOUCHING) <= TOUCHING) {
+            // Bit for bit the distance up to the limit, so a margin of 0 is the plain test.
+            double d = sensors.outlinesAt(i, pose).distance(otherShapes, TOUCHING + margin);
+            if (d <= TOUCHING - margin) {
                 touching.add(sensors.sensor(i));
+            } else if (d <= TOUCHING + margin) {
+                return null;
             }
         }
         return touching;

@@ -101,6 +101,8 @@ final class RobotShapes {
     static final class ContactSensors {
         private final RsBodyContactSensor[] sensors;
         private final Outlines[] placed;
+        /** The largest distance of any sensor outline's vertex from the body origin, metres. */
+        private final double reach;
 
         private ContactSensors(RsBody body) {
             int n = 0;
@@ -113,9 +115,20 @@ final class RobotShapes {
             }
             sensors = Arrays.copyOf(found, n);
             placed = new Outlines[n];
+            double r = 0.0;
             for (int i = 0; i < n; i++) {
-                placed[i] = Outlines.at(new double[][] {sensors[i].getOutlineVertices()}, new RsTransform());
+                double[] outline = sensors[i].getOutlineVertices();
+                placed[i] = Outlines.at(new double[][] {outline}, new RsTransform());
+                for (int k = 0; k + 1 < outline.length; k += 2) {
+                    r = Math.max(r, Math.hypot(outline[k], outline[k + 1]));
+                }
             }
+            reach = r;
+        }
+
+        /** The largest distance of any sensor outline's vertex from the body origin, metres. */
+        double reach() {
+            return reach;
         }
 
         int count() {
