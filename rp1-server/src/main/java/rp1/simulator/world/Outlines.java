@@ -122,6 +122,40 @@ final class Outlines {
         return best;
     }
 
+    /**
+     * Whether this and {@code other} overlap, come within {@code limit} of each other, or neither: 0 if
+     * they overlap, {@code limit} if they do not but some polygons of the two are within {@code limit},
+     * else a value above {@code limit}. It answers as {@link #distance(Outlines, double)} would be read
+     * against 0 and {@code limit}, for less: the search for a vertex within reach of an edge ends at the
+     * first one found, where the distance needs them all. (The two could differ only for outlines that
+     * do not overlap and yet have a vertex on an edge to the last bit, at a distance of exactly 0.)
+     */
+    double within(Outlines other, double limit) {
+        double beyond = limit + Nearest.SLACK;
+        boolean near = false;
+        for (int i = 0; i < xs.length; i++) {
+            for (int j = 0; j < other.xs.length; j++) {
+                if (boxGap(i, other, j) > beyond) {
+                    continue;
+                }
+                if (polygonsOverlap(i, other, j)) {
+                    return 0.0;
+                }
+                if (!near) {
+                    Nearest n = new Nearest(limit, true);
+                    n.verticesToEdges(xs[i], ys[i], other.xs[j], other.ys[j], other.minX[j], other.minY[j],
+                            other.maxX[j], other.maxY[j], other.radius(j));
+                    if (!n.found) {
+                        n.verticesToEdges(other.xs[j], other.ys[j], xs[i], ys[i], minX[i], minY[i], maxX[i], maxY[i],
+                                radius(i));
+                    }
+                    near = n.found;
+                }
+            }
+        }
+        return near ? limit : Math.nextUp(beyond);
+    }
+
     /** How far apart the boxes of polygon i of this and polygon j of {@code o} are (0 if they overlap). */
     private double boxGap(int i, Outlines o, int j) {
         double dx = Math.max(0.0, Math.max(minX[i] - o.maxX[j], o.minX[j] - maxX[i]));
@@ -235,7 +269,7 @@ final class Outlines {
      * so the value is bit for bit what trying every pair gives.
      */
     private double squaredDistance(int i, Outlines o, int j, double limit) {
-        Nearest n = new Nearest(limit);
+        Nearest n = new Nearest(limit, false);
         n.verticesToEdges(xs[i], ys[i], o.xs[j], o.ys[j], o.minX[j], o.minY[j], o.maxX[j], o.maxY[j], o.radius(j));
         n.verticesToEdges(o.xs[j], o.ys[j], xs[i], ys[i], minX[i], minY[i], maxX[i], maxY[i], radius(i));
         return n.best;
@@ -262,7 +296,11 @@ final class Outlines {
          */
         static final double SLACK = 1.0e-9;
         private final double limit;
+        /** Whether to stop at the first vertex within {@link #limit} of an edge, which sets {@link #found}. */
+        private final boolean any;
         double best = Double.POSITIVE_INFINITY;
+        /** Whether a vertex within {@link #limit} of an edge was found (looked for only with {@link #any}). */
+        boolean found;
         private double bound;
         /** The root of {@link #bound}. */
         private double reach;
@@ -271,8 +309,9 @@ final class Outlines {
         private double cy;
         private double r;
 
-        Nearest(double limit) {
+        Nearest(double limit, boolean any) {
             this.limit = limit;
+            this.any = any;
             this.reach = limit + SLACK;
             this.bound = square(reach);
         }
@@ -298,7 +337,7 @@ final class Outlines {
                 }
             }
             vertexToEdges(px[first], py[first], ex, ey, x0, y0, x1, y1);
-            for (int k = 0; k < px.length; k++) {
+            for (int k = 0; k < px.length && !found; k++) {
                 if (k != first) {
                     vertexToEdges(px[k], py[k], ex, ey, x0, y0, x1, y1);
                 }
@@ -328,6 +367,10 @@ final class Outlines {
                     best = d;
                     reach = Math.min(limit, Math.sqrt(d)) + SLACK;
                     bound = square(reach);
+                    if (any && Math.sqrt(d) <= limit) {
+                        found = true;
+                        return;
+                    }
                 }
             }
         }

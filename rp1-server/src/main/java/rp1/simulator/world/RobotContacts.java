@@ -175,8 +175,10 @@ final class RobotContacts {
     }
 
     /**
-     * A lower bound of the distance between the two robots' shapes at time {@code t}: the gap between
-     * the circles of their reach while that is wide, else the exact distance of their outlines.
+     * The gap between the two robots' shapes at time {@code t} as the search reads it. Above
+     * {@link #SAMPLE_SPACING}, a lower bound of their distance to jump by: the gap between the circles
+     * of their reach while that is wide, else the exact distance of their outlines. Within it, only
+     * whether they touch: 0 if they do, else {@code SAMPLE_SPACING}.
      */
     private static double gap(Robot a, Robot b, double t) {
         RsTransform pa = a.motion().getPoseAtTime(t);
@@ -185,11 +187,11 @@ final class RobotContacts {
         if (circles > SAMPLE_SPACING) {
             return circles;
         }
-        // Within the sampling spacing only whether they touch matters, and a search bounded by it is
-        // cheap; beyond it the search needs the exact distance to jump by.
+        // Within the sampling spacing only whether they touch matters, and the search for a vertex near
+        // an edge can end at the first; beyond it the search needs the exact distance to jump by.
         Outlines outlinesA = a.shapes().outlinesAt(pa);
         Outlines outlinesB = b.shapes().outlinesAt(pb);
-        double near = outlinesA.distance(outlinesB, SAMPLE_SPACING);
+        double near = outlinesA.within(outlinesB, SAMPLE_SPACING);
         return near <= SAMPLE_SPACING ? near : outlinesA.distance(outlinesB);
     }
 

@@ -63,6 +63,10 @@ class OutlinesTest {
                 } else {
                     assertTrue(bounded > limit, "beyond " + limit + " for pair " + i + ": " + bounded);
                 }
+                // Read against 0 and the limit, as the contact search reads it, the same answer.
+                double near = ra.within(rb, limit);
+                assertEquals(expected == 0.0, near == 0.0, "touching, within " + limit + ", pair " + i);
+                assertEquals(expected <= limit, near <= limit, "near, within " + limit + ", pair " + i);
             }
         }
         assertTrue(overlapping > PAIRS / 10 && overlapping < PAIRS * 9 / 10, "both cases are tried: " + overlapping);
