@@ -116,8 +116,8 @@ final class RobotContacts {
             searchedIn[n] = run;
             double reach = a.shapes().reach() + a.speedBound() * (to - from) + SAMPLE_SPACING;
             RsTransform p = a.poseAt(from);
-            for (Robot b : surroundings.robotsNear(p.m13 - reach, p.m23 - reach, p.m13 + reach, p.m23 + reach)) {
-                if (b == a || coveredBy(b, a)) {
+            for (Robot b : surroundings.robotsNear(a, p.m13 - reach, p.m23 - reach, p.m13 + reach, p.m23 + reach)) {
+                if (coveredBy(b, a)) {
                     continue;
                 }
                 boolean aFirst = a.getNumber() < b.getNumber();

@@ -71,24 +71,22 @@ final class RobotIndex {
         }
     }
 
-    /** The robots whose boxes overlap [x0, x1] x [y0, y1], in joining order. */
-    List<Robot> near(double x0, double y0, double x1, double y1) {
-        return near(x0, y0, x1, y1, null);
-    }
-
     /**
-     * The robots {@link #near(double, double, double, double)} finds, less those whose box's circle
-     * {@code reach} turns down: a robot lies within its box, so its box tells whether something of it
-     * could be within reach without reading the robot itself (with ten thousand robots, reading a
-     * robot's motion is a cache miss or more, and a sensor's ray passes near few of the robots around).
+     * The robots whose boxes overlap [x0, x1] x [y0, y1], in joining order, other than {@code self} (if
+     * not null), less those whose box's circle {@code reach} (if not null) turns down. A robot lies
+     * within its box, so its box tells whether something of it could be within reach without reading
+     * the robot itself (with ten thousand robots, reading a robot's motion is a cache miss or more, and
+     * a sensor's ray passes near few of the robots around). A robot asking what is near it finds
+     * itself in nearly every query, so it is passed over by number.
      */
-    List<Robot> near(double x0, double y0, double x1, double y1, Reach reach) {
+    List<Robot> near(double x0, double y0, double x1, double y1, Robot self, Reach reach) {
         int count = grid.collect(x0, y0, x1, y1);
+        int skip = self == null ? -1 : self.getNumber();
         List<Robot> out = new ArrayList<>(count);
         for (int i = 0; i < count; i++) {
             int n = grid.hit(i);
             int b = 4 * n;
-            if (boxes[b] <= x1 && x0 <= boxes[b + 2] && boxes[b + 1] <= y1 && y0 <= boxes[b + 3]
+            if (n != skip && boxes[b] <= x1 && x0 <= boxes[b + 2] && boxes[b + 1] <= y1 && y0 <= boxes[b + 3]
                     && (reach == null || reachesBox(reach, b))) {
                 out.add(byNumber[n]);
             }

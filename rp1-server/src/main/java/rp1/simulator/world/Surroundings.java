@@ -68,9 +68,9 @@ final class Surroundings {
         }
     }
 
-    /** The robots on the floor filed within the box [x0, x1] x [y0, y1], in joining order. */
-    List<Robot> robotsNear(double x0, double y0, double x1, double y1) {
-        return robots.near(x0, y0, x1, y1);
+    /** The robots on the floor other than {@code self} filed within the box [x0, x1] x [y0, y1], in joining order. */
+    List<Robot> robotsNear(Robot self, double x0, double y0, double x1, double y1) {
+        return robots.near(x0, y0, x1, y1, self, null);
     }
 
     /**
@@ -100,12 +100,10 @@ final class Surroundings {
      */
     private List<RsWall[]> shapesOfRobotsNear(Robot self, double x, double y, double reach, double time) {
         List<RsWall[]> near = new ArrayList<>();
-        for (Robot o : robots.near(x - reach, y - reach, x + reach, y + reach)) {
-            if (o != self) {
-                RsTransform p = o.poseAt(time);
-                if (Math.hypot(p.m13 - x, p.m23 - y) <= reach + o.shapes().reach()) {
-                    near.add(o.obstaclesAt(p));
-                }
+        for (Robot o : robots.near(x - reach, y - reach, x + reach, y + reach, self, null)) {
+            RsTransform p = o.poseAt(time);
+            if (Math.hypot(p.m13 - x, p.m23 - y) <= reach + o.shapes().reach()) {
+                near.add(o.obstaclesAt(p));
             }
         }
         return near;
@@ -132,12 +130,10 @@ final class Surroundings {
             return nearWalls;
         }
         List<RsWall[]> seen = new ArrayList<>();
-        for (Robot o : robots.near(x0, y0, x1, y1, (x, y, radius) -> r.mightSeeAround(p, x, y, radius))) {
-            if (o != r) {
-                RsTransform b = o.poseAt(time);
-                if (r.mightSee(p, o, b)) {
-                    seen.add(o.obstaclesAt(b));
-                }
+        for (Robot o : robots.near(x0, y0, x1, y1, r, (x, y, radius) -> r.mightSeeAround(p, x, y, radius))) {
+            RsTransform b = o.poseAt(time);
+            if (r.mightSee(p, o, b)) {
+                seen.add(o.obstaclesAt(b));
             }
         }
         return seen.isEmpty() ? nearWalls : withRobots(nearWalls, seen);
