@@ -1,5 +1,6 @@
 package rp1.bench;
 
+import java.lang.management.CompilationMXBean;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.nio.charset.StandardCharsets;
@@ -27,9 +28,10 @@ import rp1.simulator.launch.RunningServer;
  * a warm-up of a fifth of SIMULATED seconds, the wall time the next SIMULATED seconds take; printed as
  * simulated seconds per wall second (and per CPU second of the Java threads, which a shared
  * machine disturbs less), with events per second. The figure is the compiled steady state: before the
- * measured world, the same world runs for {@link #COMPILER_WARM_UP_MILLIS} of wall time and is thrown
- * away, so the optimizing compiler has done its work (a fifth of one robot's 20,000 simulated seconds
- * passes in a tenth of a second, and measured the compiler as much as the simulator).
+ * measured world, the same world runs until the compilers have been idle for a second (two seconds at
+ * least, twenty at most) and is thrown away, so the optimizing compiler has done its work (a fifth of
+ * one robot's 20,000 simulated seconds passes in a tenth of a second, and measured the compiler as
+ * much as the simulator).
  */
 public final class ScaleArena {
     private static final double WALL = 0.1;
@@ -44,8 +46,12 @@ public final class ScaleArena {
     private static final double WARM_UP_PART = 5.0;
     /** The longest wait between two looks at the clock. */
     private static final long MAX_POLL_MILLIS = 20;
-    /** How long a throwaway copy of the world runs first, so that the measured one runs compiled code. */
+    /** How long a throwaway copy of the world runs first at least, so that the measured one runs compiled code. */
     private static final long COMPILER_WARM_UP_MILLIS = 2000;
+    /** ... and then until the compilers have been idle this long. */
+    private static final long COMPILER_QUIET_MILLIS = 1000;
+    /** ... but no longer than this. */
+    private static final long COMPILER_WARM_UP_MAX_MILLIS = 20_000;
     /** A measurement (or its warm-up) that takes longer than this stops there and reports what it got. */
     private static final long MAX_WALL_MILLIS = 300_000;
 
@@ -71,7 +77,7 @@ public final class ScaleArena {
             RunningServer warmUp = BenchServer.start(properties);
             try {
                 awaitPlaced(robots);
-                Thread.sleep(COMPILER_WARM_UP_MILLIS);
+                awaitCompilerQuiet();
             } finally {
                 warmUp.stop();
                 ScaleWanderer.startAnew();
@@ -110,6 +116,34 @@ public final class ScaleArena {
             server.stop();
         }
         System.exit(0);
+    }
+
+    /**
+     * Lets the throwaway world run until the compilers have had nothing to do for
+     * {@link #COMPILER_QUIET_MILLIS} (at least {@link #COMPILER_WARM_UP_MILLIS}, at most
+     * {@link #COMPILER_WARM_UP_MAX_MILLIS}). A fixed two seconds was not enough on this project's
+     * two-core machine: the optimizing compiler's work on the motion step (over half a second for one
+     * method) sometimes landed in the measured stretch, and the same build's 1,000-robot figure read
+     * anything from 20 to 31.
+     */
+    private static void awaitCompilerQuiet() throws InterruptedException {
+        CompilationMXBean compiler = ManagementFactory.getCompilationMXBean();
+        long start = System.currentTimeMillis();
+        long quietSince = start;
+        long last = compiler.getTotalCompilationTime();
+        while (true) {
+            Thread.sleep(100);
+            long now = System.currentTimeMillis();
+            long total = compiler.getTotalCompilationTime();
+            if (total != last) {
+                last = total;
+                quietSince = now;
+            }
+            if (now - start >= COMPILER_WARM_UP_MAX_MILLIS
+                    || (now - start >= COMPILER_WARM_UP_MILLIS && now - quietSince >= COMPILER_QUIET_MILLIS)) {
+                return;
+            }
+        }
     }
 
     /** Waits until {@code robots} wanderers are placed, or for {@link #PLACEMENT_TIMEOUT_MILLIS} at most. */
