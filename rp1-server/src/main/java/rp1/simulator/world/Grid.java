@@ -18,6 +18,8 @@ final class Grid {
     private static final int INDEX_MAX_CELLS = 1 << 16;
     /** How many items a cell keeps in {@link #slots}: a robot's neighbourhood in metre cells holds one or two. */
     private static final int IN_PLACE = 4;
+    /** Up to this many items found are sorted by insertion. */
+    private static final int SMALL_SORT = 24;
 
     private final double minX;
     private final double minY;
@@ -277,7 +279,22 @@ final class Grid {
     }
 
     private int sortedHits() {
-        Arrays.sort(hits, 0, hitCount);
+        // A query mostly finds a handful of items: those are sorted in place by insertion, without the
+        // library sort's set-up for large arrays.
+        if (hitCount > SMALL_SORT) {
+            Arrays.sort(hits, 0, hitCount);
+            return hitCount;
+        }
+        int[] h = hits;
+        for (int i = 1; i < hitCount; i++) {
+            int v = h[i];
+            int j = i - 1;
+            while (j >= 0 && h[j] > v) {
+                h[j + 1] = h[j];
+                j--;
+            }
+            h[j + 1] = v;
+        }
         return hitCount;
     }
 
