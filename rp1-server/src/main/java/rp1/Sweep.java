@@ -103,6 +103,10 @@ public final class Sweep {
                     + batch.plans().size() + " plan" + (batch.plans().size() == 1 ? "" : "s") + "), " + options.jobs
                     + " at a time, into " + batch.out()
                     + (options.resume ? "; " + batch.kept().size() + " finished before, " + toRun + " to run" : ""));
+            String note = batch.engineNote();
+            if (note != null) {
+                out.println("rp1.Sweep: " + note);
+            }
             Thread warmUp = new Thread(SweepPicture::warmUp, "rp1-picture-warm-up");
             warmUp.setDaemon(true);
             warmUp.start();

@@ -25,24 +25,29 @@ public class Main extends RsClient implements RsRunnable {
     /**
      * The course on FloorPlans/ackerman.txt (a 10 m by 8 m hall, cones at (5, 2.5), (5, 5.5) and
      * (8, 4), home at (2, 4) facing east): between the first two cones, anticlockwise round the third,
-     * back west north of the second and round to home. Corners x, y in metres.
+     * back west north of the second and round to home. Corners x, y in metres. A fresh array each
+     * time: an array in a static field is state a sweep's runs would share.
      */
-    public static final double[] COURSE = {
-        2.0, 4.0,
-        4.0, 4.0,
-        6.2, 4.0,
-        7.4, 2.96,
-        8.6, 2.96,
-        9.2, 4.0,
-        8.6, 5.04,
-        7.4, 5.04,
-        6.0, 6.6,
-        4.0, 6.8,
-        2.4, 6.8,
-        1.2, 6.0,
-        0.9, 5.0,
-        1.4, 4.1,
-        2.5, 4.0};
+    static double[] course() {
+        return new double[] {
+            2.0, 4.0,
+            4.0, 4.0,
+            6.2, 4.0,
+            7.4, 2.96,
+            8.6, 2.96,
+            9.2, 4.0,
+            8.6, 5.04,
+            7.4, 5.04,
+            6.0, 6.6,
+            4.0, 6.8,
+            2.4, 6.8,
+            1.2, 6.0,
+            0.9, 5.0,
+            1.4, 4.1,
+            2.5, 4.0
+        };
+    }
+
     /** Driving speed, metres per second. */
     public static final double SPEED = 1.0;
     /** How often the driver looks where the car is, seconds. */
@@ -72,7 +77,7 @@ public class Main extends RsClient implements RsRunnable {
         super.initialize();
         body = Car.build();
         steering = (RsAckermanSteering) body.wheelSystem;
-        driver = new CourseDriver(COURSE, Car.WHEEL_BASE, LOOKAHEAD, SPEED, steering.getMaxAbsSteeringAngle(), this::log);
+        driver = new CourseDriver(course(), Car.WHEEL_BASE, LOOKAHEAD, SPEED, steering.getMaxAbsSteeringAngle(), this::log);
         sendBodySpecification(body);
         addPlacementEventHandler(this::placed);
         addHeartbeatEventHandler(this::tick);

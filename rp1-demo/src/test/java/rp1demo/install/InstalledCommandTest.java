@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 
 import javax.tools.ToolProvider;
@@ -190,25 +191,43 @@ class InstalledCommandTest {
 
     /** A robot compiled apart into dir/classes, and still.ini, which loads it. */
     private void stillRobot() throws IOException {
-        Path source = dir.resolve("src/mybot/Still.java");
+        robot("Still", "classes", "A robot that places itself and stands still.", "");
+        robotProperties("still.ini", "mybot.Still");
+    }
+
+    /** Properties that run the robot {@code className} in the White Room for 2 s, headless, at once. */
+    private void robotProperties(String file, String className) throws IOException {
+        write(file, "floorPlanFileName=WhiteRoom.txt", "enableGUI=false", "enableNetworkClients=false",
+                "interlockEnabled=true", "simulationSpeed=max", "maxSimulationTime=2", "dlcEnabled=true",
+                "dlcName=" + className);
+    }
+
+    /**
+     * Compiles robot mybot.NAME into dir/FOLDER: it runs {@code more} (Java statements, and class body
+     * declarations before them), then places a disc at "home".
+     */
+    private void robot(String name, String folder, String comment, String declarations, String... more)
+            throws IOException {
+        Path source = dir.resolve("src/mybot/" + name + ".java");
         Files.createDirectories(source.getParent());
-        Files.writeString(source, String.join("\n",
+        List<String> lines = new ArrayList<>(List.of(
                 "package mybot;",
-                "/** A robot that places itself and stands still. */",
-                "public class Still extends rp1.rossum.RsClient {",
+                "/** " + comment + " */",
+                "public class " + name + " extends rp1.rossum.RsClient {",
+                declarations,
                 "    @Override public void initialize() throws java.io.IOException {",
-                "        super.initialize();",
-                "        rp1.rossum.RsBody body = new rp1.rossum.RsBody(\"still\");",
+                "        super.initialize();"));
+        lines.addAll(List.of(more));
+        lines.addAll(List.of(
+                "        rp1.rossum.RsBody body = new rp1.rossum.RsBody(\"" + name.toLowerCase(Locale.ROOT) + "\");",
                 "        body.addPart(new rp1.rossum.RsBodyCircle(0.0, 0.0, 0.15));",
                 "        sendBodySpecification(body);",
                 "        sendPlacementRequest(\"home\");",
                 "    }",
-                "}"), StandardCharsets.UTF_8);
-        assertEquals(0, ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", dir.resolve("classes").toString(),
+                "}"));
+        Files.writeString(source, String.join("\n", lines), StandardCharsets.UTF_8);
+        assertEquals(0, ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", dir.resolve(folder).toString(),
                 "-cp", System.getProperty("java.class.path"), source.toString()));
-        write("still.ini", "floorPlanFileName=WhiteRoom.txt", "enableGUI=false", "enableNetworkClients=false",
-                "interlockEnabled=true", "simulationSpeed=max", "maxSimulationTime=2", "dlcEnabled=true",
-                "dlcName=mybot.Still");
     }
 
     @Test
@@ -226,6 +245,32 @@ class InstalledCommandTest {
         Result apart = rp1("sweep", "-p", "still.ini", "--seeds", "1", "--isolation", "process", "--out", "apart",
                 "-cp", "classes");
         assertEquals(0, apart.status(), apart.output());
+    }
+
+    @Test
+    void theRunsShareARobotsClassesOnlyWhenNoneKeepsStateInAStaticField() throws Exception {
+        stillRobot();
+        Result still = rp1("sweep", "-p", "still.ini", "--seeds", "1-2", "--out", "still", "-cp", "classes");
+        assertEquals(0, still.status(), still.output());
+        assertTrue(still.output().contains("the runs share the robot's classes: none keeps state in a static field"),
+                still.output());
+
+        // A robot that counts its runs in a static field: each run must still find it at 0.
+        robot("Counting", "counting-classes", "A robot that counts its runs in a static field, and reports the count.",
+                "    static int runs;", "        reportRunResult(\"runs_seen\", ++runs);");
+        robotProperties("counting.ini", "mybot.Counting");
+        Result counting = rp1("sweep", "-p", "counting.ini", "--seeds", "1-4", "--jobs", "2", "--out", "counting",
+                "-cp", "counting-classes");
+        assertEquals(0, counting.status(), counting.output());
+        assertTrue(counting.output().contains("each run loads the robot's classes anew: mybot.Counting.runs can keep"
+                + " state in a static field"), counting.output());
+        List<String> rows = Files.readAllLines(dir.resolve("counting/results.csv"));
+        int column = List.of(rows.get(0).split(",")).indexOf("result.runs_seen");
+        assertTrue(column >= 0, rows.get(0));
+        for (String row : rows.subList(1, rows.size())) {
+            assertEquals("1", row.split(",")[column], "every run starts with the static field at 0: " + rows);
+        }
+        assertEquals(5, rows.size(), rows.toString());
     }
 
     @Test

@@ -291,6 +291,11 @@ public final class Batch {
         return classPath;
     }
 
+    /** What the engine tells the user about how it carries out the runs, or null. */
+    public String engineNote() {
+        return engine.note();
+    }
+
     /** Carries out the runs with {@code engine} (rp1-spark's) rather than the one --isolation chose. */
     public void useEngine(RunEngine engine) {
         this.engine = engine;

@@ -2,6 +2,7 @@ package rp1.simulator.batch;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicReference;
@@ -10,12 +11,18 @@ import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.RunningServer;
 
 /**
- * Runs in the sweep's own process ({@code --isolation loader}): each with a class loader of its own
- * for the robot's classes ({@link RunClassLoader}) and a server, simulation and world of its own, so
- * that the process is started and warmed once for all of them. A run is then a function of its
- * properties, plan and seed as it is in a process of its own, as long as the robot keeps its state
- * in its objects and its classes' statics, starts no threads that outlive the run and does not call
+ * Runs in the sweep's own process ({@code --isolation loader}): each with the robot's classes as a
+ * process of its own would have them and a server, simulation and world of its own, so that the
+ * process is started and warmed once for all of them. A run is then a function of its properties,
+ * plan and seed as it is in a process of its own, as long as the robot keeps its state in its objects
+ * and its classes' statics, starts no threads that outlive the run and does not call
  * {@code System.exit} (docs/guide.md says when to use {@code --isolation process}).
+ *
+ * <p>Where a class of the robot's can keep state in a static field, each run loads the robot's
+ * classes anew ({@link RunClassLoader}), so that its statics start afresh. Where none can
+ * ({@link StaticState}), a class is the same in every run, and the runs share one loader: the robot's
+ * classes are defined, verified and linked once, and its code is compiled once instead of being
+ * interpreted again in every run.
  */
 final class LoaderRuns implements RunEngine {
     private final RunClassLoader.Source classes;
@@ -23,9 +30,27 @@ final class LoaderRuns implements RunEngine {
     private final Set<RunningServer> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
 
+    /** Whether the runs share one loader, worked out when first needed. */
+    private Sharing sharing;
+
+    /** The loader all runs share (null if each run has one of its own), and what the user is told. */
+    private record Sharing(RunClassLoader loader, String note) {
+    }
+
     LoaderRuns(List<String> robotClasses, ClassLoader parent, double timeoutSeconds) {
         this.classes = RunClassLoader.source(robotClasses, parent);
         this.timeoutSeconds = timeoutSeconds;
+    }
+
+    private synchronized Sharing sharing() {
+        if (sharing == null) {
+            Optional<String> state = classes.staticState();
+            sharing = state.isEmpty()
+                    ? new Sharing(classes.newLoader(), "the runs share the robot's classes: none keeps state in a static field")
+                    : new Sharing(null, "each run loads the robot's classes anew: " + state.get()
+                            + " can keep state in a static field");
+        }
+        return sharing;
     }
 
     @Override
@@ -33,7 +58,9 @@ final class LoaderRuns implements RunEngine {
         Thread thread = Thread.currentThread();
         ClassLoader before = thread.getContextClassLoader();
         AtomicReference<RunningServer> mine = new AtomicReference<>();
-        try (RunClassLoader loader = classes.newLoader()) {
+        RunClassLoader shared = sharing().loader();
+        RunClassLoader loader = shared != null ? shared : classes.newLoader();
+        try {
             // The robot's threads, and any library it uses that asks the context, see its own classes.
             thread.setContextClassLoader(loader);
             SweepRun here = new SweepRun(run.dir(), loader);
@@ -50,7 +77,15 @@ final class LoaderRuns implements RunEngine {
             if (mine.get() != null) {
                 running.remove(mine.get());
             }
+            if (loader != shared) {
+                loader.close();
+            }
         }
+    }
+
+    @Override
+    public String note() {
+        return sharing().note();
     }
 
     @Override

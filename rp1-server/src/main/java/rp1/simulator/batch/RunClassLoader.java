@@ -65,6 +65,8 @@ final class RunClassLoader extends URLClassLoader {
      * (its code source made into a URL) was a twentieth of a warm sweep's processor time.
      */
     static final class Source {
+        /** More classes than this on the runs' class path are not looked through for static state. */
+        private static final int MAX_CLASSES_LOOKED_THROUGH = 2000;
         private final URL[] urls;
         private final Set<URL> shared;
         private final ClassLoader parent;
@@ -95,6 +97,14 @@ final class RunClassLoader extends URLClassLoader {
         /** A fresh loader for one run. */
         RunClassLoader newLoader() {
             return new RunClassLoader(this);
+        }
+
+        /**
+         * The first static field among the classes the runs' loaders load that can keep state (see
+         * {@link StaticState}), as "CLASS.FIELD" or a reason; empty if none can.
+         */
+        Optional<String> staticState() {
+            return StaticState.find(List.of(urls), MAX_CLASSES_LOOKED_THROUGH);
         }
 
         /** The platform's classes, and classes of the library and the simulator wherever they are found. */

@@ -33,10 +33,15 @@ public interface RunEngine {
         return false;
     }
 
+    /** A line for the sweep's user on how the runs are carried out, or null. */
+    default String note() {
+        return null;
+    }
+
     /**
-     * The sweep's engine for runs in this process ({@code --isolation loader}): each with a class
-     * loader of its own for the robot's classes and a world of its own. rp1-spark's executors run
-     * their tasks with it.
+     * The sweep's engine for runs in this process ({@code --isolation loader}): each with the robot's
+     * classes as a process of its own would have them (loaded anew, unless none keeps state in a
+     * static field) and a world of its own. rp1-spark's executors run their tasks with it.
      *
      * @param robotClasses the robots' classes (dlcName), found through {@code parent}
      */

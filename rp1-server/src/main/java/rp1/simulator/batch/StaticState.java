@@ -1,0 +1,183 @@
+package rp1.simulator.batch;
+
+import java.io.ByteArrayInputStream;
+import java.io.DataInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.URISyntaxException;
+import java.net.URL;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Enumeration;
+import java.util.List;
+import java.util.Optional;
+import java.util.jar.JarEntry;
+import java.util.jar.JarFile;
+import java.util.stream.Stream;
+
+/**
+ * Whether any class in a robot's folders and jars can keep state in a static field, read from the
+ * class files without loading them. A sweep's runs in one process share the robot's classes when none
+ * can: a class is then the same in every run whether it is loaded anew or not, and loading it anew for
+ * each run only costs (defining and verifying its classes, linking its lambdas, running its code in
+ * the interpreter again: a ninth of a 64-run bumper sweep).
+ *
+ * <p>A static field holds no state a run could change if it is final and holds a primitive or a
+ * string, or is one of the fields the Java compiler makes for enums (the constants of an enum whose
+ * own fields are such values, and the array of them) and for switches on enums. Anything else (a
+ * final array, list or random source included) counts as state. A class whose file cannot be read
+ * counts as state too.
+ */
+final class StaticState {
+    private static final int ACC_STATIC = 0x0008;
+    private static final int ACC_FINAL = 0x0010;
+    private static final int ACC_SYNTHETIC = 0x1000;
+    private static final int ACC_ENUM = 0x4000;
+
+    private StaticState() {
+    }
+
+    /**
+     * The first class field found that can keep state, as "CLASS.FIELD", among the classes in
+     * {@code locations} (folders and jars); empty if none can. More than {@code maxClasses} classes
+     * count as state: looking through them all would cost more than it could save.
+     */
+    static Optional<String> find(List<URL> locations, int maxClasses) {
+        List<byte[]> classes = new ArrayList<>();
+        try {
+            if (count(locations) > maxClasses) {
+                return Optional.of("one of more than " + maxClasses + " classes (not looked through)");
+            }
+            for (URL u : locations) {
+                Path p = Path.of(u.toURI());
+                if (Files.isDirectory(p)) {
+                    try (Stream<Path> files = Files.walk(p)) {
+                        for (Path f : (Iterable<Path>) files::iterator) {
+                            if (isClassFile(f.getFileName().toString()) && Files.isRegularFile(f)) {
+                                classes.add(Files.readAllBytes(f));
+                            }
+                        }
+                    }
+                } else if (Files.isRegularFile(p)) {
+                    try (JarFile jar = new JarFile(p.toFile())) {
+                        for (Enumeration<JarEntry> e = jar.entries(); e.hasMoreElements(); ) {
+                            JarEntry entry = e.nextElement();
+                            String name = entry.getName();
+                            if (isClassFile(name.substring(name.lastIndexOf('/') + 1))
+                                    && !name.startsWith("META-INF/")) {
+                                try (InputStream in = jar.getInputStream(entry)) {
+                                    classes.add(in.readAllBytes());
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        } catch (IOException | URISyntaxException | RuntimeException e) {
+            return Optional.of("a class path entry that could not be read (" + e + ")");
+        }
+        for (byte[] bytes : classes) {
+            Optional<String> found;
+            try {
+                found = of(bytes);
+            } catch (IOException | RuntimeException e) {
+                found = Optional.of("a class file that could not be read (" + e + ")");
+            }
+            if (found.isPresent()) {
+                return found;
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** How many class files the locations hold (a jar's from its directory, without reading them). */
+    private static long count(List<URL> locations) throws IOException, URISyntaxException {
+        long n = 0;
+        for (URL u : locations) {
+            Path p = Path.of(u.toURI());
+            if (Files.isDirectory(p)) {
+                try (Stream<Path> files = Files.walk(p)) {
+                    n += files.filter(f -> isClassFile(f.getFileName().toString())).count();
+                }
+            } else if (Files.isRegularFile(p)) {
+                try (JarFile jar = new JarFile(p.toFile())) {
+                    n += jar.stream().filter(e -> e.getName().endsWith(".class")).count();
+                }
+            }
+        }
+        return n;
+    }
+
+    private static boolean isClassFile(String fileName) {
+        // module-info and package-info declare no fields.
+        return fileName.endsWith(".class") && !fileName.contains("-");
+    }
+
+    /** The first field of this class file that can keep state, as "CLASS.FIELD", or empty. */
+    static Optional<String> of(byte[] classFile) throws IOException {
+        DataInputStream in = new DataInputStream(new ByteArrayInputStream(classFile));
+        if (in.readInt() != 0xCAFEBABE) {
+            throw new IOException("not a class file");
+        }
+        in.readUnsignedShort();
+        in.readUnsignedShort();
+        String[] utf8 = new String[in.readUnsignedShort()];
+        int[] classNameIndex = new int[utf8.length];
+        for (int i = 1; i < utf8.length; i++) {
+            int tag = in.readUnsignedByte();
+            switch (tag) {
+                case 1 -> utf8[i] = in.readUTF();
+                case 7 -> classNameIndex[i] = in.readUnsignedShort();
+                case 8, 16, 19, 20 -> in.readUnsignedShort();
+                case 15 -> in.skipNBytes(3);
+                case 3, 4, 9, 10, 11, 12, 17, 18 -> in.skipNBytes(4);
+                case 5, 6 -> {
+                    in.skipNBytes(8);
+                    i++;
+                }
+                default -> throw new IOException("constant pool tag " + tag);
+            }
+        }
+        int access = in.readUnsignedShort();
+        String self = utf8[classNameIndex[in.readUnsignedShort()]];
+        in.readUnsignedShort();
+        in.skipNBytes(2L * in.readUnsignedShort());
+        boolean isEnum = (access & ACC_ENUM) != 0;
+        String selfType = "L" + self + ";";
+        int fields = in.readUnsignedShort();
+        for (int f = 0; f < fields; f++) {
+            int flags = in.readUnsignedShort();
+            String name = utf8[in.readUnsignedShort()];
+            String type = utf8[in.readUnsignedShort()];
+            int attributes = in.readUnsignedShort();
+            for (int a = 0; a < attributes; a++) {
+                in.readUnsignedShort();
+                in.skipNBytes(in.readInt() & 0xFFFFFFFFL);
+            }
+            boolean isStatic = (flags & ACC_STATIC) != 0;
+            boolean isFinal = (flags & ACC_FINAL) != 0;
+            boolean keepsNoState;
+            if (isStatic) {
+                keepsNoState = isFinal && (isValue(type)
+                        // An enum's constants and the array of them values() copies.
+                        || (isEnum && (flags & ACC_ENUM) != 0 && type.equals(selfType))
+                        || (isEnum && (flags & ACC_SYNTHETIC) != 0 && type.equals("[" + selfType))
+                        // A switch on an enum: filled in once by the class's initializer.
+                        || (name.startsWith("$SwitchMap$") && type.equals("[I")));
+            } else {
+                // An enum's constants are shared by whoever uses the class: their fields too.
+                keepsNoState = !isEnum || (isFinal && isValue(type));
+            }
+            if (!keepsNoState) {
+                return Optional.of(self.replace('/', '.') + "." + name);
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** A primitive or a string. */
+    private static boolean isValue(String type) {
+        return type.length() == 1 || type.equals("Ljava/lang/String;");
+    }
+}
