@@ -1,6 +1,8 @@
 package rp1demo.bench;
 
+import java.io.File;
 import java.io.IOException;
+import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
@@ -33,7 +35,30 @@ public final class SweepBench {
     private static final List<String> BOTH_COMPILERS = QUICK.stream()
             .filter(o -> !o.equals(JavaCommand.QUICK_COMPILER) && !o.equals(JavaCommand.ONE_COMPILER_THREAD)).toList();
 
+    /**
+     * This JVM's class path less the bench's own classes: what the installed command's JVM has (the
+     * demos, the simulator, the library). A sweep looks through the robot's class path for classes
+     * that keep state in static fields, and this class's would count.
+     */
+    private static final String CLASS_PATH = withoutBenchClasses();
+
     private SweepBench() {
+    }
+
+    private static String withoutBenchClasses() {
+        String bench;
+        try {
+            bench = Paths.get(SweepBench.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
+        } catch (URISyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+        List<String> kept = new ArrayList<>();
+        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
+            if (!Paths.get(entry).toAbsolutePath().toString().equals(bench)) {
+                kept.add(entry);
+            }
+        }
+        return String.join(File.pathSeparator, kept);
     }
 
     /** Runs the comparison; the working directory is the repository root. */
@@ -98,8 +123,10 @@ public final class SweepBench {
         for (String a : args) {
             words.add(a.equals("OUT") ? dir.resolve("out").toString() : a);
         }
+        List<String> command = new ArrayList<>(JavaCommand.of(jvm, main, words.toArray(new String[0])));
+        command.set(command.indexOf("-cp") + 1, CLASS_PATH);
         long start = System.nanoTime();
-        Process p = new ProcessBuilder(JavaCommand.of(jvm, main, words.toArray(new String[0])))
+        Process p = new ProcessBuilder(command)
                 .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve("output.txt").toFile())
                 .start();
         int status = p.waitFor();
