@@ -226,10 +226,16 @@ def test_clientzero_asks_for_the_plan_and_is_placed_at_home(rp1_server: LocalSim
     assert lines == ["floor plan 'White Room (RP1 rev. 0.4)'", 'placed at "home" (2.500, 2.500); click to move']
 
 
+def _ctrl_c_as_at_a_terminal() -> None:
+    """In the child: Ctrl-C's default disposition. A shell's background job starts with SIGINT ignored,
+    and a Python started so never turns it into KeyboardInterrupt, which is what this test is about."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def test_ctrl_c_ends_an_example_with_one_line_and_no_traceback(rp1_server: LocalSimulator) -> None:
     process = subprocess.Popen([sys.executable, str(EXAMPLES_DIR / "clientzero.py"), "--host", rp1_server.host,
                                 "--port", str(rp1_server.port)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                               text=True)
+                               text=True, preexec_fn=_ctrl_c_as_at_a_terminal)
     try:
         assert process.stdout.readline().startswith("floor plan"), "connected and running"
         process.send_signal(signal.SIGINT)
