@@ -8,9 +8,11 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.time.LocalDate;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.stream.Stream;
 
 import rp1.simulator.launch.JavaCommand;
 
@@ -61,8 +63,33 @@ public final class SweepBench {
         return String.join(File.pathSeparator, kept);
     }
 
+    /**
+     * The folders the timed commands ran in, deleted when the bench ends: each holds a sweep's files,
+     * and deleting them between the timings would slow the next one (on ext4 a file is created more
+     * slowly just after many were deleted; docs/performance.md).
+     */
+    private static final List<Path> FOLDERS = new ArrayList<>();
+
     /** Runs the comparison; the working directory is the repository root. */
     public static void main(String[] args) throws Exception {
+        try {
+            compare();
+        } finally {
+            for (Path dir : FOLDERS) {
+                deleteTree(dir);
+            }
+        }
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        try (Stream<Path> paths = Files.walk(dir)) {
+            for (Path p : (Iterable<Path>) paths.sorted(Comparator.reverseOrder())::iterator) {
+                Files.delete(p);
+            }
+        }
+    }
+
+    private static void compare() throws Exception {
         Path properties = Paths.get("Properties/bumper.ini").toAbsolutePath();
         System.out.printf(Locale.ROOT, "RP1 sweep benchmark, %s, %d processors, Java %s, load average %.1f%n",
                 LocalDate.now(), Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
@@ -119,6 +146,7 @@ public final class SweepBench {
     /** The wall seconds of one run of {@code java JVM MAIN ARGS} in a fresh folder (OUT in it). */
     private static double time(List<String> jvm, String main, String... args) throws IOException, InterruptedException {
         Path dir = Files.createTempDirectory("rp1-sweep-bench");
+        FOLDERS.add(dir);
         List<String> words = new ArrayList<>();
         for (String a : args) {
             words.add(a.equals("OUT") ? dir.resolve("out").toString() : a);
@@ -132,6 +160,7 @@ public final class SweepBench {
         int status = p.waitFor();
         double seconds = (System.nanoTime() - start) * 1e-9;
         if (status != 0) {
+            FOLDERS.remove(dir);
             throw new IllegalStateException(main + " ended with status " + status + "; see " + dir.resolve("output.txt"));
         }
         return seconds;
