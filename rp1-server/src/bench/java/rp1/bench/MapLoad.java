@@ -33,14 +33,22 @@ public final class MapLoad {
     /** Prints one line per map: walls, first and best read, heap held by the plan and by the world. */
     public static void main(String[] args) throws Exception {
         Path dir = Files.createTempDirectory("rp1-maps");
-        for (String arg : args) {
-            String[] imageAndMetres = arg.split("=", 2);
-            Path image = Path.of(imageAndMetres[0]).toAbsolutePath();
-            double metres = Double.parseDouble(imageAndMetres[1]);
-            int width = javax.imageio.ImageIO.read(image.toFile()).getWidth();
-            Path yaml = dir.resolve(image.getFileName() + ".yaml");
-            Files.writeString(yaml, "image: " + image + "\nresolution: " + (metres / width) + "\n");
-            measure(image.getFileName().toString(), metres, yaml);
+        try {
+            for (String arg : args) {
+                String[] imageAndMetres = arg.split("=", 2);
+                Path image = Path.of(imageAndMetres[0]).toAbsolutePath();
+                double metres = Double.parseDouble(imageAndMetres[1]);
+                int width = javax.imageio.ImageIO.read(image.toFile()).getWidth();
+                Path yaml = dir.resolve(image.getFileName() + ".yaml");
+                Files.writeString(yaml, "image: " + image + "\nresolution: " + (metres / width) + "\n");
+                try {
+                    measure(image.getFileName().toString(), metres, yaml);
+                } finally {
+                    Files.delete(yaml);
+                }
+            }
+        } finally {
+            Files.delete(dir);
         }
     }
 
