@@ -64,8 +64,9 @@ final class StaticState {
                         for (Enumeration<JarEntry> e = jar.entries(); e.hasMoreElements(); ) {
                             JarEntry entry = e.nextElement();
                             String name = entry.getName();
+                            // A multi-release jar's classes for later Java versions are looked at too.
                             if (isClassFile(name.substring(name.lastIndexOf('/') + 1))
-                                    && !name.startsWith("META-INF/")) {
+                                    && (!name.startsWith("META-INF/") || name.startsWith("META-INF/versions/"))) {
                                 try (InputStream in = jar.getInputStream(entry)) {
                                     classes.add(in.readAllBytes());
                                 }

@@ -160,6 +160,14 @@ class StaticStateTest {
             }
         }
         assertEquals(Optional.of(name(Tally.class, "count")), StaticState.find(List.of(jar.toUri().toURL()), 100));
+        Path versioned = dir.resolve("versioned.jar");
+        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(versioned))) {
+            out.putNextEntry(new JarEntry("META-INF/versions/17/" + Counter.class.getName().replace('.', '/') + ".class"));
+            out.write(classFile(Counter.class));
+            out.closeEntry();
+        }
+        assertEquals(Optional.of(name(Counter.class, "runs")), StaticState.find(List.of(versioned.toUri().toURL()), 100),
+                "a multi-release jar's class for this Java");
         assertEquals(Optional.of("one of more than 2 classes (not looked through)"),
                 StaticState.find(List.of(jar.toUri().toURL()), 2));
     }
