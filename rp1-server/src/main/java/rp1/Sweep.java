@@ -103,10 +103,6 @@ public final class Sweep {
                     + batch.plans().size() + " plan" + (batch.plans().size() == 1 ? "" : "s") + "), " + options.jobs
                     + " at a time, into " + batch.out()
                     + (options.resume ? "; " + batch.kept().size() + " finished before, " + toRun + " to run" : ""));
-            String note = batch.engineNote();
-            if (note != null) {
-                out.println("rp1.Sweep: " + note);
-            }
             Thread warmUp = new Thread(SweepPicture::warmUp, "rp1-picture-warm-up");
             warmUp.setDaemon(true);
             warmUp.start();
@@ -129,6 +125,10 @@ public final class Sweep {
             }
             out.println("rp1.Sweep: " + (outcomes.size() - failed) + " runs ended as asked, " + failed + " failed; "
                     + batch.out().resolve("results.csv") + ", " + summary + ", " + batch.out().resolve(SweepIndex.NAME));
+            String note = batch.engineNote();
+            if (note != null) {
+                out.println("rp1.Sweep: " + note);
+            }
             long notCarriedOut = outcomes.stream().filter(o -> !o.report().carriedOut()).count();
             if (notCarriedOut > 0) {
                 err.println("rp1.Sweep: " + notCarriedOut + " of the failed runs " + (notCarriedOut == 1 ? "was" : "were")

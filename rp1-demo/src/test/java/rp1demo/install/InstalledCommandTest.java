@@ -252,7 +252,7 @@ class InstalledCommandTest {
         stillRobot();
         Result still = rp1("sweep", "-p", "still.ini", "--seeds", "1-2", "--out", "still", "-cp", "classes");
         assertEquals(0, still.status(), still.output());
-        assertTrue(still.output().contains("the runs share the robot's classes: none keeps state in a static field"),
+        assertTrue(still.output().contains("the runs shared the robot's classes: none keeps state in a static field"),
                 still.output());
 
         // A robot that counts its runs in a static field: each run must still find it at 0.
@@ -262,7 +262,7 @@ class InstalledCommandTest {
         Result counting = rp1("sweep", "-p", "counting.ini", "--seeds", "1-4", "--jobs", "2", "--out", "counting",
                 "-cp", "counting-classes");
         assertEquals(0, counting.status(), counting.output());
-        assertTrue(counting.output().contains("each run loads the robot's classes anew: mybot.Counting.runs can keep"
+        assertTrue(counting.output().contains("each run loaded the robot's classes anew: mybot.Counting.runs can keep"
                 + " state in a static field"), counting.output());
         List<String> rows = Files.readAllLines(dir.resolve("counting/results.csv"));
         int column = List.of(rows.get(0).split(",")).indexOf("result.runs_seen");

@@ -20,9 +20,9 @@ import rp1.simulator.launch.RunningServer;
  *
  * <p>Where a class of the robot's can keep state in a static field, each run loads the robot's
  * classes anew ({@link RunClassLoader}), so that its statics start afresh. Where none can
- * ({@link StaticState}), a class is the same in every run, and the runs share one loader: the robot's
- * classes are defined, verified and linked once, and its code is compiled once instead of being
- * interpreted again in every run.
+ * ({@link StaticState}), a class is the same in every run, and the runs after the first share one
+ * loader: the robot's classes are defined, verified and linked once more, and its code is compiled
+ * once instead of being interpreted again in every run.
  */
 final class LoaderRuns implements RunEngine {
     private final RunClassLoader.Source classes;
@@ -30,8 +30,13 @@ final class LoaderRuns implements RunEngine {
     private final Set<RunningServer> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
 
-    /** Whether the runs share one loader, worked out when first needed. */
+    /**
+     * Whether the runs share one loader, worked out when a second run starts: an engine that carries
+     * out one run (a Spark task's) has nothing to share, and a sweep's first run, which goes alone, is
+     * not kept waiting for the robot's class path to be looked through.
+     */
     private Sharing sharing;
+    private boolean started;
 
     /** The loader all runs share (null if each run has one of its own), and what the user is told. */
     private record Sharing(RunClassLoader loader, String note) {
@@ -42,12 +47,21 @@ final class LoaderRuns implements RunEngine {
         this.timeoutSeconds = timeoutSeconds;
     }
 
+    /** The loader this run shares with others, or null if it has one of its own. */
+    private synchronized RunClassLoader sharedLoader() {
+        if (!started) {
+            started = true;
+            return null;
+        }
+        return sharing().loader();
+    }
+
     private synchronized Sharing sharing() {
         if (sharing == null) {
             Optional<String> state = classes.staticState();
             sharing = state.isEmpty()
-                    ? new Sharing(classes.newLoader(), "the runs share the robot's classes: none keeps state in a static field")
-                    : new Sharing(null, "each run loads the robot's classes anew: " + state.get()
+                    ? new Sharing(classes.newLoader(), "the runs shared the robot's classes: none keeps state in a static field")
+                    : new Sharing(null, "each run loaded the robot's classes anew: " + state.get()
                             + " can keep state in a static field");
         }
         return sharing;
@@ -58,7 +72,7 @@ final class LoaderRuns implements RunEngine {
         Thread thread = Thread.currentThread();
         ClassLoader before = thread.getContextClassLoader();
         AtomicReference<RunningServer> mine = new AtomicReference<>();
-        RunClassLoader shared = sharing().loader();
+        RunClassLoader shared = sharedLoader();
         RunClassLoader loader = shared != null ? shared : classes.newLoader();
         try {
             // The robot's threads, and any library it uses that asks the context, see its own classes.
@@ -84,8 +98,8 @@ final class LoaderRuns implements RunEngine {
     }
 
     @Override
-    public String note() {
-        return sharing().note();
+    public synchronized String note() {
+        return sharing == null ? null : sharing.note();
     }
 
     @Override

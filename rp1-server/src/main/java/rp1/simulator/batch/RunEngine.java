@@ -33,7 +33,7 @@ public interface RunEngine {
         return false;
     }
 
-    /** A line for the sweep's user on how the runs are carried out, or null. */
+    /** A line for the sweep's user on how the runs were carried out, once they have been; or null. */
     default String note() {
         return null;
     }
