@@ -151,10 +151,8 @@ public final class SweepBench {
         for (String a : args) {
             words.add(a.equals("OUT") ? dir.resolve("out").toString() : a);
         }
-        List<String> command = new ArrayList<>(JavaCommand.of(jvm, main, words.toArray(new String[0])));
-        command.set(command.indexOf("-cp") + 1, CLASS_PATH);
         long start = System.nanoTime();
-        Process p = new ProcessBuilder(command)
+        Process p = new ProcessBuilder(JavaCommand.withClassPath(jvm, CLASS_PATH, main, words.toArray(new String[0])))
                 .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(dir.resolve("output.txt").toFile())
                 .start();
         int status = p.waitFor();

@@ -8,8 +8,6 @@ import java.net.URISyntaxException;
 import java.net.URL;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.Enumeration;
 import java.util.List;
 import java.util.Optional;
 import java.util.jar.JarEntry;
@@ -44,31 +42,40 @@ final class StaticState {
      * count as state: looking through them all would cost more than it could save.
      */
     static Optional<String> find(List<URL> locations, int maxClasses) {
-        List<byte[]> classes = new ArrayList<>();
+        Optional<String> tooMany = Optional.of("one of more than " + maxClasses + " classes (not looked through)");
+        int listed = 0;
         try {
-            if (count(locations) > maxClasses) {
-                return Optional.of("one of more than " + maxClasses + " classes (not looked through)");
-            }
             for (URL u : locations) {
                 Path p = Path.of(u.toURI());
                 if (Files.isDirectory(p)) {
-                    try (Stream<Path> files = Files.walk(p)) {
-                        for (Path f : (Iterable<Path>) files::iterator) {
-                            if (isClassFile(f.getFileName().toString()) && Files.isRegularFile(f)) {
-                                classes.add(Files.readAllBytes(f));
-                            }
+                    List<Path> files;
+                    try (Stream<Path> walk = Files.walk(p)) {
+                        files = walk.filter(f -> isClassFile(f.getFileName().toString()) && Files.isRegularFile(f))
+                                .toList();
+                    }
+                    listed += files.size();
+                    if (listed > maxClasses) {
+                        return tooMany;
+                    }
+                    for (Path f : files) {
+                        Optional<String> found = state(Files.readAllBytes(f));
+                        if (found.isPresent()) {
+                            return found;
                         }
                     }
                 } else if (Files.isRegularFile(p)) {
                     try (JarFile jar = new JarFile(p.toFile())) {
-                        for (Enumeration<JarEntry> e = jar.entries(); e.hasMoreElements(); ) {
-                            JarEntry entry = e.nextElement();
-                            String name = entry.getName();
-                            // A multi-release jar's classes for later Java versions are looked at too.
-                            if (isClassFile(name.substring(name.lastIndexOf('/') + 1))
-                                    && (!name.startsWith("META-INF/") || name.startsWith("META-INF/versions/"))) {
-                                try (InputStream in = jar.getInputStream(entry)) {
-                                    classes.add(in.readAllBytes());
+                        // A jar's list of classes is read from its directory, without inflating any.
+                        List<JarEntry> entries = jar.stream().filter(e -> isJarClass(e.getName())).toList();
+                        listed += entries.size();
+                        if (listed > maxClasses) {
+                            return tooMany;
+                        }
+                        for (JarEntry e : entries) {
+                            try (InputStream in = jar.getInputStream(e)) {
+                                Optional<String> found = state(in.readAllBytes());
+                                if (found.isPresent()) {
+                                    return found;
                                 }
                             }
                         }
@@ -78,36 +85,22 @@ final class StaticState {
         } catch (IOException | URISyntaxException | RuntimeException e) {
             return Optional.of("a class path entry that could not be read (" + e + ")");
         }
-        for (byte[] bytes : classes) {
-            Optional<String> found;
-            try {
-                found = of(bytes);
-            } catch (IOException | RuntimeException e) {
-                found = Optional.of("a class file that could not be read (" + e + ")");
-            }
-            if (found.isPresent()) {
-                return found;
-            }
-        }
         return Optional.empty();
     }
 
-    /** How many class files the locations hold (a jar's from its directory, without reading them). */
-    private static long count(List<URL> locations) throws IOException, URISyntaxException {
-        long n = 0;
-        for (URL u : locations) {
-            Path p = Path.of(u.toURI());
-            if (Files.isDirectory(p)) {
-                try (Stream<Path> files = Files.walk(p)) {
-                    n += files.filter(f -> isClassFile(f.getFileName().toString())).count();
-                }
-            } else if (Files.isRegularFile(p)) {
-                try (JarFile jar = new JarFile(p.toFile())) {
-                    n += jar.stream().filter(e -> e.getName().endsWith(".class")).count();
-                }
-            }
+    /** {@link #of}, with a class file it cannot read counted as state. */
+    private static Optional<String> state(byte[] classFile) {
+        try {
+            return of(classFile);
+        } catch (IOException | RuntimeException e) {
+            return Optional.of("a class file that could not be read (" + e + ")");
         }
-        return n;
+    }
+
+    /** A class in a jar: a multi-release jar's classes for later Java versions count, the rest of META-INF not. */
+    private static boolean isJarClass(String name) {
+        return isClassFile(name.substring(name.lastIndexOf('/') + 1))
+                && (!name.startsWith("META-INF/") || name.startsWith("META-INF/versions/"));
     }
 
     private static boolean isClassFile(String fileName) {

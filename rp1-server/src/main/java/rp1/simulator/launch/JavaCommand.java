@@ -115,10 +115,16 @@ public final class JavaCommand {
      * process's Java and class path.
      */
     public static List<String> of(List<String> jvmOptions, String mainClass, String... args) {
+        return withClassPath(jvmOptions, System.getProperty("java.class.path"), mainClass, args);
+    }
+
+    /** {@code java [jvmOptions] -Djava.awt.headless=true -cp classPath mainClass [args]}, with this process's Java. */
+    public static List<String> withClassPath(List<String> jvmOptions, String classPath, String mainClass,
+                                             String... args) {
         List<String> command = new ArrayList<>();
         command.add(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
         command.addAll(jvmOptions);
-        command.addAll(List.of("-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), mainClass));
+        command.addAll(List.of("-Djava.awt.headless=true", "-cp", classPath, mainClass));
         command.addAll(Arrays.asList(args));
         return command;
     }

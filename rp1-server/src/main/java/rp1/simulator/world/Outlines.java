@@ -153,7 +153,7 @@ final class Outlines {
                 }
             }
         }
-        return near ? limit : Math.nextUp(beyond);
+        return near ? limit : Double.POSITIVE_INFINITY;
     }
 
     /** How far apart the boxes of polygon i of this and polygon j of {@code o} are (0 if they overlap). */

@@ -141,7 +141,7 @@ final class RobotContacts {
         }
         double gap = gap(a, b, from);
         if (gap == 0.0) {
-            stop(a, b, from, touching(a, b, from, 0.0), touching(b, a, from, 0.0), from, stepper);
+            stop(a, b, from, from, stepper);
             return;
         }
         double clear = from;
@@ -241,7 +241,7 @@ final class RobotContacts {
                 clear = mid;
             }
         }
-        stop(a, b, touching, touching(a, b, touching, 0.0), touching(b, a, touching, 0.0), now, stepper);
+        stop(a, b, touching, now, stepper);
     }
 
     /** Whether the robot's stop for a contact at {@code clear} and at {@code touching} is the same. */
@@ -269,6 +269,11 @@ final class RobotContacts {
      * sensors of both that touch the other robot go hot with its name: a stopped robot's when its
      * motion ends, a robot at rest's at the time the other one stops.
      */
+    private void stop(Robot a, Robot b, double contact, double now, MotionStepper stepper) {
+        stop(a, b, contact, touching(a, b, contact, 0.0), touching(b, a, contact, 0.0), now, stepper);
+    }
+
+    /** {@link #stop(Robot, Robot, double, double, MotionStepper)} with the touching sensors known. */
     private void stop(Robot a, Robot b, double contact, List<RsBodyContactSensor> touchingA,
                       List<RsBodyContactSensor> touchingB, double now, MotionStepper stepper) {
         double stopA = stopOne(a, contact, now);
@@ -315,10 +320,10 @@ final class RobotContacts {
      */
     private static List<RsBodyContactSensor> touching(Robot r, Robot other, double contact, double margin) {
         RobotShapes.ContactSensors sensors = r.shapes().contactSensors();
-        List<RsBodyContactSensor> touching = new ArrayList<>();
         if (sensors.count() == 0) {
-            return touching;
+            return List.of();
         }
+        List<RsBodyContactSensor> touching = new ArrayList<>();
         Outlines otherShapes = outlinesAt(other, contact);
         RsTransform pose = r.motion().getPoseAtTime(contact);
         for (int i = 0; i < sensors.count(); i++) {

@@ -6,6 +6,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.URL;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -194,7 +195,7 @@ class StaticStateTest {
                     String n = f.getFileName().toString();
                     if (n.matches("StaticStateTest\\$\\d+\\.class")) {
                         byte[] bytes = Files.readAllBytes(f);
-                        tables += new String(bytes, java.nio.charset.StandardCharsets.ISO_8859_1).contains("$SwitchMap$") ? 1 : 0;
+                        tables += new String(bytes, StandardCharsets.ISO_8859_1).contains("$SwitchMap$") ? 1 : 0;
                         Files.write(pkg.resolve(n), bytes);
                     }
                 }
