@@ -5,9 +5,10 @@ import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Locale;
 
 /**
  * One metric of a sweep drawn as a box plot per configuration: the box from the first to the third
@@ -129,6 +130,8 @@ public final class BoxPlot {
 
     private static String tick(double v, double span) {
         int places = Math.max(0, Math.min(4, (int) Math.ceil(-Math.log10(span / 4.0)) + 1));
-        return String.format(Locale.ROOT, "%." + places + "f", v);
+        // Rounded as "%.Nf" rounds (half up, from the shortest decimal form) but without a Formatter,
+        // whose first use in the process loads the locale data: 9 ms at the end of a sweep.
+        return BigDecimal.valueOf(v).setScale(places, RoundingMode.HALF_UP).toPlainString();
     }
 }

@@ -337,13 +337,15 @@ public final class Batch {
         if (!options.resume) {
             spec.write(out);
         }
-        Map<Run, Outcome> finished = new ConcurrentHashMap<>();
-        kept.forEach(o -> finished.put(o.run(), o));
+        // Keyed by each run's own folder: a record's hashCode is linked on its first call, which cost
+        // 10 ms before the first run could start.
+        Map<Path, Outcome> finished = new ConcurrentHashMap<>();
+        kept.forEach(o -> finished.put(o.run().dir(), o));
         ExecutorService pool = Executors.newFixedThreadPool(options.jobs);
         try (ResultsCsv results = ResultsCsv.start(out.resolve(RESULTS), variedKeys(), kept)) {
             List<Future<?>> futures = new ArrayList<>();
             for (Run r : runs) {
-                if (!finished.containsKey(r)) {
+                if (!finished.containsKey(r.dir())) {
                     if (futures.size() == 1 && engine.firstRunWarmsUp()) {
                         // Two cold bumper runs at once took 0.43 s each; the first alone 0.19 s.
                         futures.get(0).get();
@@ -352,7 +354,7 @@ public final class Batch {
                         Outcome o = stopping ? null : execute(r);
                         if (o != null) {
                             results.add(o);
-                            finished.put(r, o);
+                            finished.put(r.dir(), o);
                             progress.finished(o);
                         }
                         return null;
@@ -370,8 +372,9 @@ public final class Batch {
         }
         List<Outcome> outcomes = new ArrayList<>();
         for (Run r : runs) {
-            if (finished.containsKey(r)) {
-                outcomes.add(finished.get(r));
+            Outcome o = finished.get(r.dir());
+            if (o != null) {
+                outcomes.add(o);
             }
         }
         ResultsCsv.write(out.resolve(RESULTS), variedKeys(), outcomes);
