@@ -40,6 +40,7 @@ public class RsBody extends RsComponent {
      * robot; rebuilt when a part is added. Never handed out: callers get a copy.
      */
     private transient RsBodySensor[] sensors;
+    private transient List<RsBodySensor> sensorList;
     /** The interactive shapes in part order, kept for the same reason (every motion is searched with them). */
     private transient RsBodyShape[] interactive;
     private int bodyID;
@@ -61,6 +62,7 @@ public class RsBody extends RsComponent {
         }
         parts.add(part);
         sensors = null;
+        sensorList = null;
         interactive = null;
         part.joined(this);
         if (part instanceof RsWheelSystem) {
@@ -82,6 +84,19 @@ public class RsBody extends RsComponent {
     /** The sensors, in part order. */
     public RsBodySensor[] getBodySensorArray() {
         return sensors().clone();
+    }
+
+    /**
+     * The sensors, in part order, as a list that cannot be changed: for a caller that reads them at
+     * every step, which {@link #getBodySensorArray()}'s copy would cost a clone each time.
+     */
+    public List<RsBodySensor> getBodySensors() {
+        List<RsBodySensor> l = sensorList;
+        if (l == null) {
+            l = List.of(sensors());
+            sensorList = l;
+        }
+        return l;
     }
 
     private RsBodySensor[] sensors() {

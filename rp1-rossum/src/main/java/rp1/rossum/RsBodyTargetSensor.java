@@ -1,5 +1,7 @@
 package rp1.rossum;
 
+import java.util.List;
+
 import rp1.rossum.event.RsSensorEvent;
 import rp1.rossum.event.RsTargetSensorEvent;
 
@@ -191,7 +193,9 @@ public class RsBodyTargetSensor extends RsBodySensor {
 
     private void search(RsPlan plan, RsWall[] walls) {
         double best = Double.POSITIVE_INFINITY;
-        for (RsTarget target : plan.getTargetArray()) {
+        List<RsTarget> targets = plan.targets();
+        for (int i = 0; i < targets.size(); i++) {
+            RsTarget target = targets.get(i);
             if (!target.getSelected() || !target.isGeometrySet) {
                 continue;
             }

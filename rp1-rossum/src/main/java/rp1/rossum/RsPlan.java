@@ -167,6 +167,11 @@ public class RsPlan {
         return objectsOf(RsTarget.class).toArray(new RsTarget[0]);
     }
 
+    /** The targets, in declaration order, as the list kept for them: for those that look at every step. */
+    List<RsTarget> targets() {
+        return objectsOf(RsTarget.class);
+    }
+
     /**
      * The placements, in declaration order.
      *

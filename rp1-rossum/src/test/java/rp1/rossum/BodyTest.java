@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import rp1.rossum.request.RsMotionRequest;
 
@@ -33,6 +34,20 @@ class BodyTest {
         assertArrayEquals(new RsBodyPart[] {ds, c, p}, b.getBodyPartArray());
         assertSame(ds, b.wheelSystem);
         assertArrayEquals(new RsBodyPainter[] {p}, b.getBodyPainterArray());
+    }
+
+    @Test
+    void theSensorListIsTheSensorArrayAndFollowsPartsAddedLater() {
+        RsBody b = new RsBody("b");
+        RsBodyRangeSensor range = new RsBodyRangeSensor(SQUARE, 4, 0, 0, 0, 1, 1);
+        b.addPart(new RsBodyShape(SQUARE, 4));
+        b.addPart(range);
+        assertEquals(List.of(range), b.getBodySensors());
+        assertThrows(UnsupportedOperationException.class, () -> b.getBodySensors().clear());
+        RsBodyContactSensor contact = new RsBodyContactSensor(SQUARE, 4);
+        b.addPart(contact);
+        assertEquals(List.of(range, contact), b.getBodySensors());
+        assertArrayEquals(b.getBodySensorArray(), b.getBodySensors().toArray());
     }
 
     @Test

@@ -49,8 +49,22 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
     @Override
     public synchronized void worldChanged(World world, double simTime) {
         for (Robot r : world.getRobots()) {
-            robots.computeIfAbsent(r.getNumber(), n -> new Watched(n, r.getLabel())).see(r);
+            watched(r).see(r);
         }
+    }
+
+    /**
+     * The robot's record, made when first asked for. Not with {@code computeIfAbsent}: a sweep's runs
+     * use the quick compiler only, whose code builds a lambda that captures by a method handle, and
+     * at every change of the world that was a twentieth of the simulation's time.
+     */
+    private Watched watched(Robot r) {
+        Watched w = robots.get(r.getNumber());
+        if (w == null) {
+            w = new Watched(r.getNumber(), r.getLabel());
+            robots.put(r.getNumber(), w);
+        }
+        return w;
     }
 
     @Override
@@ -62,7 +76,7 @@ public final class RunStatistics implements WorldListener, Simulation.EventListe
         if (r == null) {
             return;
         }
-        Watched w = robots.computeIfAbsent(r.getNumber(), n -> new Watched(n, r.getLabel()));
+        Watched w = watched(r);
         w.client = session.getNumber();
         if (event instanceof RsMotionHaltedEvent h && h.causeOfHalt == RsMotionHaltedEvent.HALTED_ON_COLLISION) {
             if (w.collisions++ == 0) {

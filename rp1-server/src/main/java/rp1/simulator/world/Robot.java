@@ -265,7 +265,9 @@ public final class Robot {
     /** Step 3: target, range and paint sensors at {@code time}; one event per changed, subscribed sensor. */
     void sense(double time, RsPlan plan, RsWall[] obstacles) {
         body.processSensors(time, plan, obstacles, pose());
-        for (RsBodySensor s : body.getBodySensorArray()) {
+        List<RsBodySensor> sensors = body.getBodySensors();
+        for (int i = 0; i < sensors.size(); i++) {
+            RsBodySensor s = sensors.get(i);
             if (s.didStateChange()) {
                 events.sendIfSubscribed(noise.reading(s, time, true));
             }
