@@ -40,6 +40,7 @@ public class RsBody extends RsComponent {
      * robot; rebuilt when a part is added. Never handed out: callers get a copy.
      */
     private transient RsBodySensor[] sensors;
+    /** A copy of {@link #sensors} that cannot be changed, as {@link #getBodySensors()} hands it out. */
     private transient List<RsBodySensor> sensorList;
     /** The interactive shapes in part order, kept for the same reason (every motion is searched with them). */
     private transient RsBodyShape[] interactive;

@@ -54,10 +54,11 @@ public final class ScaleArena {
     /** ... but no longer than this. */
     private static final long COMPILER_WARM_UP_MAX_MILLIS = 20_000;
     /**
-     * How many throwaway copies of the world run before the measured one. Starting the second
-     * copy deoptimized the motion step, the contact search and the robot index (placing robots takes
-     * paths the first copy's steady state never did), and their recompilation, half a second of the
-     * optimizing compiler's time, overlapped the measured stretch; the second copy absorbs it.
+     * How many throwaway copies of the world run before the measured one. With one, starting the
+     * measured world deoptimized the motion step, the contact search and the robot index (placing
+     * robots takes paths the first world's steady state never took), and their recompilation, half a
+     * second of the optimizing compiler's time, overlapped the measured stretch; a second throwaway
+     * world takes that in.
      */
     private static final int WARM_UP_WORLDS = Integer.getInteger("rp1.bench.warmUpWorlds", 2);
     /** A measurement (or its warm-up) that takes longer than this stops there and reports what it got. */
