@@ -36,12 +36,10 @@ public class RsBody extends RsComponent {
 
     private final ArrayList<RsBodyPart> parts = new ArrayList<>();
     /**
-     * The sensors in part order, kept because the simulator reads them at every motion step of every
-     * robot; rebuilt when a part is added. Never handed out: callers get a copy.
+     * The sensors in part order, a list that cannot be changed, kept because the simulator reads them
+     * at every motion step of every robot; rebuilt when a part is added.
      */
-    private transient RsBodySensor[] sensors;
-    /** A copy of {@link #sensors} that cannot be changed, as {@link #getBodySensors()} hands it out. */
-    private transient List<RsBodySensor> sensorList;
+    private transient List<RsBodySensor> sensors;
     /** The interactive shapes in part order, kept for the same reason (every motion is searched with them). */
     private transient RsBodyShape[] interactive;
     private int bodyID;
@@ -63,7 +61,6 @@ public class RsBody extends RsComponent {
         }
         parts.add(part);
         sensors = null;
-        sensorList = null;
         interactive = null;
         part.joined(this);
         if (part instanceof RsWheelSystem) {
@@ -84,26 +81,17 @@ public class RsBody extends RsComponent {
 
     /** The sensors, in part order. */
     public RsBodySensor[] getBodySensorArray() {
-        return sensors().clone();
+        return getBodySensors().toArray(new RsBodySensor[0]);
     }
 
     /**
      * The sensors, in part order, as a list that cannot be changed: for a caller that reads them at
-     * every step, which {@link #getBodySensorArray()}'s copy would cost a clone each time.
+     * every step, which {@link #getBodySensorArray()}'s copy would cost a copy each time.
      */
     public List<RsBodySensor> getBodySensors() {
-        List<RsBodySensor> l = sensorList;
-        if (l == null) {
-            l = List.of(sensors());
-            sensorList = l;
-        }
-        return l;
-    }
-
-    private RsBodySensor[] sensors() {
-        RsBodySensor[] s = sensors;
+        List<RsBodySensor> s = sensors;
         if (s == null) {
-            s = partsOf(RsBodySensor.class).toArray(new RsBodySensor[0]);
+            s = List.copyOf(partsOf(RsBodySensor.class));
             sensors = s;
         }
         return s;
@@ -263,8 +251,9 @@ public class RsBody extends RsComponent {
      */
     public boolean processSensors(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
         boolean changed = false;
-        for (RsBodySensor s : sensors()) {
-            if (s.computeAndSetState(simTime, plan, walls, pose)) {
+        List<RsBodySensor> all = getBodySensors();
+        for (int i = 0; i < all.size(); i++) {
+            if (all.get(i).computeAndSetState(simTime, plan, walls, pose)) {
                 changed = true;
             }
         }

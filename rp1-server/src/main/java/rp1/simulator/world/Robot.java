@@ -89,15 +89,15 @@ public final class Robot {
      * depend on {@code other} at {@code otherPose} (see it, or be blocked by it).
      */
     boolean mightSee(RsTransform pose, Robot other, RsTransform otherPose) {
-        return mightSeeAround(pose, otherPose.m13, otherPose.m23, other.shapes.reach() + 1.0e-9);
+        return sight.mightSee(pose, otherPose.m13, otherPose.m23, other.shapes.reach() + 1.0e-9);
     }
 
     /**
-     * Whether, with this robot at {@code pose}, a reading of its range or target sensors could depend
-     * on anything within {@code radius} of (x, y).
+     * With this robot at {@code pose}, whether a reading of its range or target sensors could depend
+     * on anything within a radius of a point (valid until the robot's sight is next asked about).
      */
-    boolean mightSeeAround(RsTransform pose, double x, double y, double radius) {
-        return sight.mightSee(pose, x, y, radius);
+    RobotIndex.Reach sightFrom(RsTransform pose) {
+        return sight.aimedAt(pose);
     }
 
     /** The pose at {@code time} under the current motion (identity before the first placement). */

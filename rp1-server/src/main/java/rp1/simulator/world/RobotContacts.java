@@ -346,7 +346,7 @@ final class RobotContacts {
                               MotionStepper stepper) {
         if (!Double.isNaN(ownStop)) {
             stepper.evaluateBy(r, ownStop);
-            for (RsBodySensor s : r.getBody().getBodySensorArray()) {
+            for (RsBodySensor s : r.getBody().getBodySensors()) {
                 if (s instanceof RsBodyContactSensor) {
                     boolean touches = touching.contains(s);
                     ((RsBodyContactSensor) s).setCollision(touches, touches ? other.getLabel() : null);

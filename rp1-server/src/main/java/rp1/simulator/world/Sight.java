@@ -14,7 +14,7 @@ import rp1.rossum.RsTransform;
  * range sensor along one ray, each target sensor anywhere within its range. It decides which other
  * robots a reading could depend on, so that a robot in a crowd turns only those into obstacles.
  */
-final class Sight {
+final class Sight implements RobotIndex.Reach {
     /** Per range sensor: detector x, detector y, sight angle, maximum range. */
     private final double[][] rays;
     /** Per target sensor: detector x, detector y, maximum range. */
@@ -73,7 +73,21 @@ final class Sight {
      * {@code radius} of (x, y): its ray passes that close, or it lies within a target sensor's range.
      */
     boolean mightSee(RsTransform pose, double x, double y, double radius) {
+        return aimedAt(pose).within(x, y, radius);
+    }
+
+    /**
+     * This sight with the robot at {@code pose}: as a {@link RobotIndex.Reach}, whether a reading could
+     * depend on something within a radius of a point, until it is aimed elsewhere.
+     */
+    Sight aimedAt(RsTransform pose) {
         aim(pose);
+        return this;
+    }
+
+    /** {@link #mightSee} at the pose last aimed at. */
+    @Override
+    public boolean within(double x, double y, double radius) {
         for (int i = 0; i < rays.length; i++) {
             if (Outlines.squaredToSegment(x, y, rayX0[i], rayY0[i], rayX1[i], rayY1[i]) <= radius * radius) {
                 return true;

@@ -130,7 +130,7 @@ final class Surroundings {
             return nearWalls;
         }
         List<RsWall[]> seen = new ArrayList<>();
-        for (Robot o : robots.near(x0, y0, x1, y1, r, (x, y, radius) -> r.mightSeeAround(p, x, y, radius))) {
+        for (Robot o : robots.near(x0, y0, x1, y1, r, r.sightFrom(p))) {
             RsTransform b = o.poseAt(time);
             if (r.mightSee(p, o, b)) {
                 seen.add(o.obstaclesAt(b));

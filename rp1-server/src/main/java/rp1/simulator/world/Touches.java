@@ -49,7 +49,7 @@ final class Touches {
         if (touched == null || touched.isEmpty()) {
             return Double.NaN;
         }
-        for (RsBodySensor s : r.getBody().getBodySensorArray()) {
+        for (RsBodySensor s : r.getBody().getBodySensors()) {
             Touch first = null;
             for (Touch t : touched) {
                 if (t.sensor() == s && t.time() <= time && (first == null || t.time() < first.time())) {
