@@ -364,6 +364,9 @@ public final class Batch {
             for (Future<?> f : futures) {
                 f.get();
             }
+            // Every run has ended. (If one could not be carried out, the others may still be going,
+            // and the engine is left open: it is only memory and open jars until the JVM ends.)
+            engine.close();
         } catch (ExecutionException e) {
             throw new IOException("a run could not be carried out: " + e.getCause(), e.getCause());
         } finally {

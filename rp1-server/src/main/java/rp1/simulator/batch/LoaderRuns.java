@@ -98,6 +98,19 @@ final class LoaderRuns implements RunEngine {
     }
 
     @Override
+    public synchronized void close() {
+        // The shared loader's classes stay usable (a loaded class needs no open jar); only its jars
+        // and the loader's own resources are let go. The note stays for the sweep's last line.
+        if (sharing != null && sharing.loader() != null) {
+            try {
+                sharing.loader().close();
+            } catch (IOException e) {
+                // A jar that will not close stays open until the loader is collected: the runs are over either way.
+            }
+        }
+    }
+
+    @Override
     public synchronized String note() {
         return sharing == null ? null : sharing.note();
     }

@@ -9,7 +9,7 @@ import java.util.List;
  * {@link Factory}, such as rp1-spark's, which runs them on a Spark cluster). Any thread; several
  * runs at once.
  */
-public interface RunEngine {
+public interface RunEngine extends AutoCloseable {
     /** How a run went, and its robots' trails. */
     record Ran(RunReport report, List<Trail> trails) {
     }
@@ -31,6 +31,15 @@ public interface RunEngine {
      */
     default boolean firstRunWarmsUp() {
         return false;
+    }
+
+    /**
+     * Releases what the engine kept for its runs (the loader the runs shared, and its open jars) once
+     * no run is going or will start: a JVM that runs one sweep after another keeps nothing of the
+     * ones that ended. Safe to call more than once.
+     */
+    @Override
+    default void close() {
     }
 
     /** A line for the sweep's user on how the runs were carried out, once they have been; or null. */
