@@ -33,6 +33,8 @@ final class IsolatedRun implements LocalRun {
         } catch (ConfigException e) {
             throw new IOException("the run's properties: " + e.getMessage(), e);
         }
-        return RunEngine.inThisProcess(robots, loader, timeoutSeconds).run(new Batch.Run(Map.of(), 0, "", dir));
+        try (RunEngine engine = RunEngine.inThisProcess(robots, loader, timeoutSeconds)) {
+            return engine.run(new Batch.Run(Map.of(), 0, "", dir));
+        }
     }
 }

@@ -19,6 +19,8 @@ final class ProcessRun implements LocalRun {
 
     @Override
     public RunEngine.Ran run(Path dir, List<Path> robotClassPath, double timeoutSeconds) throws IOException, InterruptedException {
-        return RunEngine.inProcesses(timeoutSeconds, robotClassPath).run(new Batch.Run(Map.of(), 0, "", dir));
+        try (RunEngine engine = RunEngine.inProcesses(timeoutSeconds, robotClassPath)) {
+            return engine.run(new Batch.Run(Map.of(), 0, "", dir));
+        }
     }
 }
