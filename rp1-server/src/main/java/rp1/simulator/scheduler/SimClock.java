@@ -124,9 +124,17 @@ public final class SimClock {
         }
     }
 
-    /** Ends a {@link #stop(double)}; the deadlines are not moved, so time lost while stopped is caught up. */
+    /**
+     * Ends a {@link #stop(double)}; the deadlines are not moved, so time lost while stopped is caught
+     * up, as far as {@link #MAX_LAG_SECONDS} allows: time stood still at the time it was stopped at.
+     */
     void resume() {
-        stopped = false;
+        if (stopped) {
+            stopped = false;
+            if (!lockstep && begun && !held) {
+                keepWithinLag(simTime);
+            }
+        }
     }
 
     /** Time may not advance until {@link #release()}; work due now still runs. Not on a replay clock. */
@@ -210,21 +218,36 @@ public final class SimClock {
      * the first queued timed task); returns the updated time. Time never goes back: a horizon in the
      * past (a negative timeout waiting to run) or not a number leaves it where it is. Lockstep, stopped,
      * held and not yet begun clocks do not move; a paused one not past its limit.
+     *
+     * <p>The clock is behind only where work has fallen due: up to the horizon, time passed with
+     * nothing to do (a client thinking while no task is queued, the scheduler asleep until the next
+     * one), and that time is not lost. Counting it as lag took up to four fifths of such a run's time
+     * away: a paced run with nothing queued before its end ran at a fifth of its speed.
      */
     double update(double horizon) {
         if (!lockstep && begun && !stopped && !held) {
-            double estimate = estimate();
-            double maxLag = MAX_LAG_SECONDS * speed;
-            if (estimate - simTime > maxLag) {
-                simAnchor -= estimate - simTime - maxLag;
-                estimate = simTime + maxLag;
-            }
+            double estimate = keepWithinLag(Math.max(simTime, horizon));
             double reached = Math.min(Math.min(estimate, horizon), limit);
             if (reached > simTime) {
                 simTime = reached;
             }
         }
         return simTime;
+    }
+
+    /**
+     * What the deadlines say simulation time is now, after moving them so that it is at most
+     * {@link #MAX_LAG_SECONDS} of wall time past {@code base}, the time the clock could have kept up
+     * to (a base that is not a number moves nothing).
+     */
+    private double keepWithinLag(double base) {
+        double estimate = estimate();
+        double maxLag = MAX_LAG_SECONDS * speed;
+        if (estimate - base > maxLag) {
+            simAnchor -= estimate - base - maxLag;
+            estimate = base + maxLag;
+        }
+        return estimate;
     }
 
     /** What the deadlines say simulation time is now (paced clocks only). */

@@ -333,6 +333,38 @@ class SchedulerTest {
         assertEquals(0.4, s.now(), 1e-12, "time still advances");
     }
 
+    /**
+     * Time with nothing to do is not time lost: a paced run whose only queued task is its end (or
+     * with nothing queued at all) keeps its speed however long the scheduler sleeps between looks.
+     */
+    @Test
+    void anIdlePacedClockFollowsTheWallClock() {
+        long[] wallNanos = {0};
+        Scheduler s = new Scheduler(SimClock.paced(() -> wallNanos[0], 1.0));
+        s.begin();
+        wallNanos[0] = 4_500_000_000L;
+        assertEquals(4.5, s.now(), 1e-9, "nothing queued: a client arriving 4.5 s in is stamped 4.5");
+        s.schedule(30.0, Scheduler.NORMAL, record("end"));
+        wallNanos[0] = 9_500_000_000L;
+        assertEquals(9.5, s.now(), 1e-9, "only the end queued");
+        wallNanos[0] = 31_000_000_000L;
+        s.runUntilIdle();
+        assertEquals(Arrays.asList("end@30.0"), log);
+        assertEquals(31.0, s.now(), 1e-9);
+    }
+
+    @Test
+    void aPacedClockLateWithWorkDueCatchesUpAtMostItsLagLimitPastIt() {
+        long[] wallNanos = {0};
+        Scheduler s = new Scheduler(SimClock.paced(() -> wallNanos[0], 1.0));
+        s.begin();
+        s.schedule(1.0, Scheduler.NORMAL, record("due"));
+        wallNanos[0] = 60_000_000_000L;
+        s.runUntilIdle();
+        assertEquals(Arrays.asList("due@1.0"), log);
+        assertEquals(1.0 + SimClock.MAX_LAG_SECONDS, s.now(), 1e-9, "a minute late is not a minute's burst");
+    }
+
     @Test
     void aPacedClockNeverFallsMoreThanItsLagLimitBehind() {
         long[] wallNanos = {0};
