@@ -28,9 +28,13 @@ public class GuideBumper extends RsClient implements RsRunnable {
         sendBodySpecification(body);
         addPlacementEventHandler(e -> drive());
         addMotionHaltedEventHandler(e -> {
-            if (e.causeOfHalt == RsMotionHaltedEvent.HALTED_ON_COLLISION) {
-                log("bumped at " + e.x + ", " + e.y + "; turning");
-                sendMotionRequest(new RsMotionRequest(0.0, Math.PI / 2, 1.0));   // quarter turn
+            // Bumped, or blocked before it could start (duration 0: see "A motion that cannot start"
+            // below; asking again at once would be blocked again, for ever): back off while turning.
+            // A turn on the spot would not do: the chassis is a polygon of many sides, whose corners
+            // sweep out a little as it turns, into what it has just touched.
+            if (e.causeOfHalt == RsMotionHaltedEvent.HALTED_ON_COLLISION || e.duration == 0.0) {
+                log("stopped at " + e.x + ", " + e.y + "; backing off");
+                sendMotionRequest(new RsMotionRequest(-0.1, Math.PI / 2, 1.0));   // 10 cm back, a quarter turn
             } else {
                 drive();
             }

@@ -65,6 +65,20 @@ class GuideExamplesTest {
     }
 
     /**
+     * The guide's first client bumps into the hall's walls again and again and drives on each time: a
+     * handler that asked for a turn on the spot after a bump was blocked at once, for ever, and in
+     * lockstep the run never reached its end.
+     */
+    @Test
+    void theBumperBumpsAndDrivesOnForMinutes() throws Exception {
+        run("mybot.Bumper", List.of(), "maxSimulationTime=600");
+        // What a loaded client logs goes to the server's log.
+        String log = log();
+        long bumps = log.lines().filter(l -> l.contains("; backing off")).count();
+        assertTrue(bumps >= 10, "bumped " + bumps + " times in 600 s:\n" + log);
+    }
+
+    /**
      * Runs {@code client}, one of the guide's examples or of {@code extraSources}, loaded into a server
      * with the guide's hall and the {@code settings} that make it stop, and returns what the client
      * printed on standard output.
