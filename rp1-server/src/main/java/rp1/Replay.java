@@ -36,8 +36,10 @@ public final class Replay {
     /** Exit status when the recording has no end (the run did not stop cleanly) and was replayed as far as it goes. */
     public static final int PARTIAL = 4;
 
-    static final String USAGE = String.join("\n",
-            "usage: java rp1.Replay RECORDING [--events OUT] [--snapshot OUT.png] [--html OUT.html] [--until T]",
+    /** The command that starts a replay through this class directly, as its usage names it. */
+    private static final String DIRECT = "java rp1.Replay";
+    /** The options, after the usage's first line. */
+    private static final String OPTIONS = String.join("\n",
             "  RECORDING        a file written by the server with recordFileName",
             "  --events OUT     write every event sent, one line each, as eventLogFileName does",
             "  --snapshot PNG   write a picture of the world where the replay stops",
@@ -50,20 +52,37 @@ public final class Replay {
 
     /** Replays; the process exits with the status. */
     public static void main(String[] args) {
-        System.exit(run(args, System.out, System.err));
+        main(DIRECT, args);
+    }
+
+    /** {@link #main(String[])} for a replay started as {@code command} ({@code rp1 replay}), which its usage names. */
+    public static void main(String command, String[] args) {
+        System.exit(run(command, args, System.out, System.err));
+    }
+
+    /** What the command line may hold, for a replay started as {@code command}. */
+    static String usage(String command) {
+        return "usage: " + command + " RECORDING [--events OUT] [--snapshot OUT.png] [--html OUT.html] [--until T]\n"
+                + OPTIONS;
     }
 
     /** Replays as the command line asks; returns the exit status. */
     public static int run(String[] args, PrintStream out, PrintStream err) {
+        return run(DIRECT, args, out, err);
+    }
+
+    /** {@link #run(String[], PrintStream, PrintStream)} for a replay started as {@code command}. */
+    static int run(String command, String[] args, PrintStream out, PrintStream err) {
+        String usage = usage(command);
         Options o;
         try {
             o = Options.parse(args);
         } catch (IllegalArgumentException e) {
-            err.println("rp1.Replay: " + e.getMessage() + "\n" + USAGE);
+            err.println("rp1.Replay: " + e.getMessage() + "\n" + usage);
             return 1;
         }
         if (o == null) {
-            out.println(USAGE);
+            out.println(usage);
             return 0;
         }
         try {

@@ -29,9 +29,10 @@ public final class Rp1 {
 
     static final String USAGE = String.join("\n",
             "usage: rp1 [-p PROPERTIES] [-f FLOORPLAN] [--port N] [--headless] [-cp PATH]",
-            "       rp1 replay RECORDING [--events OUT] [--snapshot OUT.png] [--until T]",
-            "       rp1 sweep -p PROPERTIES --seeds SEEDS --out DIR [--plans A,B] [--jobs N] [--timeout S] [-cp PATH]",
-            "                 [--master local[N]|spark://HOST:PORT [--keep NAMES]]",
+            "       rp1 replay RECORDING [--events OUT] [--snapshot OUT.png] [--html OUT.html] [--until T]",
+            "       rp1 sweep -p PROPERTIES --seeds SEEDS --out DIR [--vary KEY=VALUES ...] [--plans A,B] [--jobs N]",
+            "                 [--timeout S] [--isolation loader|process] [--client CMD] [--pictures] [--resume]",
+            "                 [--html] [-cp PATH] [--master local[N]|spark://HOST:PORT [--keep NAMES]]",
             "       rp1 cluster [--workers N]      a Spark cluster on this machine, for rp1 sweep --master",
             "Without -p: a demo robot, in a window (Properties/RP1.ini), or without a display headless",
             "(Properties/headless.ini, its picture in firefighter.png). rp1 replay -h and rp1 sweep -h say more.",
@@ -49,9 +50,9 @@ public final class Rp1 {
         } else if (args.length > 0 && args[0].equals("cluster")) {
             System.exit(SparkCommand.run(SparkCommand.CLUSTER, rest, System.err));
         } else if (args.length > 0 && args[0].equals("sweep")) {
-            Sweep.main(rest);
+            Sweep.main("rp1 sweep", rest);
         } else if (args.length > 0 && args[0].equals("replay")) {
-            Replay.main(Arrays.copyOfRange(args, 1, args.length));
+            Replay.main("rp1 replay", rest);
         } else {
             System.exit(server(args, System.getenv(), System.err));
         }

@@ -37,10 +37,8 @@ import rp1.web.SweepIndex;
 public final class Sweep {
     /** The option that writes every run's replay page beside its recording, linked from index.html. */
     private static final String HTML = "--html";
-    private static final String USAGE = SweepOptions.USAGE + "\n  --html           also write each run's replay page"
-            + " (runs/SEED-PLAN/replay.html), linked from DIR/index.html"
-            + "\n  --master URL     run on Apache Spark: local[N] or spark://HOST:PORT (rp1 cluster starts one);"
-            + "\n                   rp1 sweep --master local -h says more";
+    /** The command that starts a sweep through this class directly, as its usage and advice name it. */
+    private static final String DIRECT = "java rp1.Sweep";
     /** Exit status when some run failed. */
     public static final int RUN_FAILED = 2;
 
@@ -52,7 +50,35 @@ public final class Sweep {
      * cleanly and keeps the finished ones ({@link Interruption}).
      */
     public static void main(String[] args) {
-        Interruption.runAndExit("rp1.Sweep", i -> run(args, System.out, System.err, System.console() != null, i));
+        main(DIRECT, args);
+    }
+
+    /**
+     * {@link #main(String[])} for a sweep started as {@code command} ({@code rp1 sweep}): its usage and
+     * its advice on going on after an interruption name that command.
+     */
+    public static void main(String command, String[] args) {
+        Interruption.runAndExit(command, i -> run(command, args, System.out, System.err, System.console() != null, i,
+                null));
+    }
+
+    /** The usage of a sweep started as {@code command}, with the options this class adds. */
+    static String usage(String command) {
+        return usage(command, "[--master URL]",
+                "  --master URL   run on Apache Spark: local[N] or spark://HOST:PORT (rp1 cluster starts one);",
+                "                 rp1 sweep --master local -h says more");
+    }
+
+    /**
+     * The usage of a sweep started as {@code command} with the options this class adds and then
+     * {@code more}, which {@code synopsis} sums up (rp1-spark's).
+     */
+    public static String usage(String command, String synopsis, String... more) {
+        List<String> lines = new ArrayList<>(List.of(
+                "  --html         also write each run's replay page (runs/SEED-PLAN/replay.html), linked from",
+                "                 DIR/index.html"));
+        lines.addAll(List.of(more));
+        return SweepOptions.usage(command, "[--html] " + synopsis, lines.toArray(new String[0]));
     }
 
     /** {@link #run(String[], PrintStream, PrintStream, boolean, Interruption)}, never interrupted. */
@@ -79,16 +105,27 @@ public final class Sweep {
      */
     public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption,
                           RunEngine.Factory engines) {
+        return run(DIRECT, args, out, err, terminal, interruption, engines);
+    }
+
+    /**
+     * {@link #run(String[], PrintStream, PrintStream, boolean, Interruption, RunEngine.Factory)} for a
+     * sweep started as {@code command} ({@code rp1 sweep}, or {@code rp1 sweep --master URL} for
+     * rp1-spark's): what its usage and its advice on going on after an interruption begin with.
+     */
+    public static int run(String command, String[] args, PrintStream out, PrintStream err, boolean terminal,
+                          Interruption interruption, RunEngine.Factory engines) {
+        String usage = usage(command);
         SweepOptions options;
         boolean pages = Arrays.asList(args).contains(HTML);
         try {
             options = SweepOptions.parse(Arrays.stream(args).filter(a -> !a.equals(HTML)).toArray(String[]::new));
         } catch (IllegalArgumentException e) {
-            err.println("rp1.Sweep: " + e.getMessage() + "\n" + USAGE);
+            err.println("rp1.Sweep: " + e.getMessage() + "\n" + usage);
             return 1;
         }
         if (options == null) {
-            out.println(USAGE);
+            out.println(usage);
             return 0;
         }
         try {
@@ -119,7 +156,7 @@ public final class Sweep {
                 int missing = batch.runs().size() - outcomes.size();
                 err.println("rp1.Sweep: interrupted; " + outcomes.size() + " of " + batch.runs().size() + " runs finished"
                         + " (" + failed + " failed), in " + batch.out().resolve("results.csv") + " and " + summary
-                        + ". To run the other " + missing + ", add --resume to the same command:\n  rp1.Sweep "
+                        + ". To run the other " + missing + ", add --resume to the same command:\n  " + command + " "
                         + resumeArguments(args));
                 return Interruption.STATUS;
             }
@@ -133,7 +170,7 @@ public final class Sweep {
             if (notCarriedOut > 0) {
                 err.println("rp1.Sweep: " + notCarriedOut + " of the failed runs " + (notCarriedOut == 1 ? "was" : "were")
                         + " never carried out (not started, or lost by the cluster; results.csv says why). To run "
-                        + (notCarriedOut == 1 ? "it" : "them") + " again, add --resume to the same command:\n  rp1.Sweep "
+                        + (notCarriedOut == 1 ? "it" : "them") + " again, add --resume to the same command:\n  " + command + " "
                         + resumeArguments(args));
             }
             return failed == 0 ? 0 : RUN_FAILED;

@@ -47,4 +47,39 @@ class Rp1Test {
         assertFalse(Display.answers("127.0.0.1:987"));
         assertTrue(Display.answers("/private/tmp/com.apple.launchd.x/org.xquartz:0"), "not understood: let the window try");
     }
+
+    /** The options a usage lists in its option lines (those beginning with two spaces and a dash). */
+    private static List<String> optionsListed(String usage) {
+        return usage.lines().filter(l -> l.matches("  -[-a-z]+.*")).map(l -> l.trim().split("[ ,=]")[0]).toList();
+    }
+
+    @Test
+    void rp1HelpNamesEveryOptionOfItsSweepAndReplay() {
+        String sweep = Sweep.usage("rp1 sweep");
+        String replay = Replay.usage("rp1 replay");
+        for (String option : optionsListed(sweep)) {
+            if (!option.equals("-h")) {
+                assertTrue(Rp1.USAGE.contains(option), "rp1 --help leaves out rp1 sweep " + option + ":\n" + Rp1.USAGE);
+            }
+        }
+        for (String option : optionsListed(replay)) {
+            if (!option.equals("-h")) {
+                assertTrue(Rp1.USAGE.contains(option), "rp1 --help leaves out rp1 replay " + option);
+            }
+        }
+        assertTrue(optionsListed(sweep).containsAll(List.of("--vary", "--client", "--resume", "--html", "--master")),
+                sweep);
+    }
+
+    @Test
+    void aSweepOrReplayStartedByRp1NamesItsCommandInItsUsage() {
+        String sweep = Sweep.usage("rp1 sweep");
+        assertTrue(sweep.startsWith("usage: rp1 sweep -p PROPERTIES"), sweep);
+        // The synopsis's second line lines up under the first's options.
+        assertEquals("usage: rp1 sweep ".length(), sweep.lines().skip(1).findFirst().orElseThrow().indexOf('['));
+        List<String> lines = sweep.lines().toList();
+        assertTrue(lines.get(lines.size() - 1).startsWith("  -h, --help"), "-h comes last:\n" + sweep);
+        assertTrue(Replay.usage("rp1 replay").startsWith("usage: rp1 replay RECORDING"));
+        assertTrue(Sweep.usage("java rp1.Sweep").startsWith("usage: java rp1.Sweep -p PROPERTIES"));
+    }
 }

@@ -1,8 +1,6 @@
 package rp1.spark;
 
-import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.net.InetAddress;
 import java.net.URI;
 import java.nio.file.Paths;
@@ -36,6 +34,8 @@ public final class SparkSweep {
             "                 (default: the executors' cores when the sweep starts)",
             "  --keep NAMES   files of each run (recording.txt, events.txt, end.png, ... or all) to bring back",
             "                 from the executors whatever their size; others larger than 4 MB stay there");
+    /** The command users start a sweep with. */
+    private static final String COMMAND = "rp1 sweep";
     /** How long the sweep waits for the first executor of a cluster. */
     private static final long EXECUTOR_WAIT_SECONDS = 120;
 
@@ -44,7 +44,7 @@ public final class SparkSweep {
 
     /** Runs the sweep; the process exits with its status. */
     public static void main(String[] args) {
-        Interruption.runAndExit("rp1.Sweep", i -> run(args, System.out, System.err, System.console() != null, i));
+        Interruption.runAndExit(COMMAND, i -> run(args, System.out, System.err, System.console() != null, i));
     }
 
     /**
@@ -72,14 +72,11 @@ public final class SparkSweep {
             }
         }
         if (master == null) {
-            return Sweep.run(rest.toArray(new String[0]), out, err, terminal, interruption);
+            return Sweep.run(COMMAND, rest.toArray(new String[0]), out, err, terminal, interruption, null);
         }
         if (rest.contains("-h") || rest.contains("--help")) {
-            ByteArrayOutputStream usage = new ByteArrayOutputStream();
-            int status = Sweep.run(new String[] {"--help"}, new PrintStream(usage, true, StandardCharsets.UTF_8), err,
-                    terminal, interruption);
-            out.println(usage.toString(StandardCharsets.UTF_8).replaceAll("(?s)\\n  --master URL.*", "") + "\n" + USAGE);
-            return status;
+            out.println(Sweep.usage(COMMAND, "--master URL [--keep NAMES]", USAGE.split("\n")));
+            return 0;
         }
         JavaSparkContext spark;
         try {
@@ -94,7 +91,9 @@ public final class SparkSweep {
                 rest.add("--jobs");
                 rest.add(Integer.toString(Math.min(1000, spark.defaultParallelism())));
             }
-            return Sweep.run(rest.toArray(new String[0]), out, err, terminal, interruption,
+            // The command the sweep names in its advice on going on after an interruption.
+            String command = COMMAND + " --master " + master + (keep.isEmpty() ? "" : " --keep " + String.join(",", keep));
+            return Sweep.run(command, rest.toArray(new String[0]), out, err, terminal, interruption,
                     batch -> SparkRuns.open(spark, batch, keep, batch.options().isolation == SweepOptions.Isolation.PROCESS
                             ? new ProcessRun() : new IsolatedRun(), Paths.get("").toAbsolutePath()));
         } finally {

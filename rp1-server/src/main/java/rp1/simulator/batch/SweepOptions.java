@@ -21,11 +21,8 @@ public final class SweepOptions {
     /** Wall seconds a run may take unless {@code --timeout} says otherwise. */
     static final double DEFAULT_TIMEOUT = 600.0;
 
-    /** What the command line may hold. */
-    public static final String USAGE = String.join("\n",
-            "usage: java rp1.Sweep -p PROPERTIES --seeds SEEDS --out DIR [--vary KEY=VALUES ...] [--plans A.txt,B.txt]",
-            "                      [--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] [--pictures]",
-            "                      [--resume]",
+    /** The options, one per line or more, as {@link #usage} lists them after its first lines. */
+    private static final String OPTIONS = String.join("\n",
             "  -p PROPERTIES  the server's properties: a file, or Properties/NAME on the class path; they must",
             "                 load the robot (dlcEnabled, dlcName) and bound every run (maxSimulationTime or",
             "                 exitWhenClientsDone)",
@@ -46,8 +43,25 @@ public final class SweepOptions {
             "  -cp PATH       where the robot's classes (dlcName) are, besides the simulator's own (also --classpath)",
             "  --resume       go on with the sweep in DIR that was interrupted: run only the runs it has no",
             "                 results for, or that could not be started or a cluster lost (the other options",
-            "                 must be those it was started with)",
-            "  -h, --help     print this and exit");
+            "                 must be those it was started with)");
+
+    /**
+     * What the command line may hold, for a sweep started as {@code command} ({@code rp1 sweep},
+     * {@code java rp1.Sweep}): the synopsis, ending with {@code synopsis} (the options that whoever
+     * starts the sweep adds, such as {@code [--html]}), the options, then {@code more} (those options'
+     * lines, indented as these are), then {@code -h}.
+     */
+    public static String usage(String command, String synopsis, String... more) {
+        String indent = " ".repeat("usage: ".length() + command.length() + 1);
+        List<String> lines = new ArrayList<>(List.of(
+                "usage: " + command + " -p PROPERTIES --seeds SEEDS --out DIR [--vary KEY=VALUES ...] [--plans A.txt,B.txt]",
+                indent + "[--jobs N] [--timeout S] [--isolation loader|process] [--client CMD] [--pictures]",
+                indent + "[--resume]" + (synopsis.isEmpty() ? "" : " " + synopsis),
+                OPTIONS));
+        lines.addAll(List.of(more));
+        lines.add("  -h, --help     print this and exit");
+        return String.join("\n", lines);
+    }
 
     /** How the runs are kept apart. */
     public enum Isolation {

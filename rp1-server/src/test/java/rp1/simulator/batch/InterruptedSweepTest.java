@@ -85,7 +85,7 @@ class InterruptedSweepTest {
         assertEquals(130, sweep.exitValue(), said);
         assertTrue(said.contains("rp1.Sweep: interrupted; 1 of 4 runs finished (0 failed), in "
                 + dir.resolve("out/results.csv") + " and " + dir.resolve("out/summary.png") + ". To run the other 3, add"
-                + " --resume to the same command:\n  rp1.Sweep " + String.join(" ", args) + " --resume"), said);
+                + " --resume to the same command:\n  java rp1.Sweep " + String.join(" ", args) + " --resume"), said);
         List<String> rows = rows();
         assertEquals(2, rows.size(), rows.toString());
         assertTrue(rows.get(1).startsWith("1," + dir.resolve("home.txt") + ",runs/1-home,") && rows.get(1)
@@ -133,7 +133,7 @@ class InterruptedSweepTest {
         assertEquals(Sweep.RUN_FAILED, inProcess(args), sweeps.out() + sweeps.err());
         assertTrue(rows().get(2).contains(RunReport.NOT_STARTED), rows().get(2));
         assertTrue(sweeps.err().contains("rp1.Sweep: 1 of the failed runs was never carried out (not started, or lost"
-                + " by the cluster; results.csv says why). To run it again, add --resume to the same command:\n  rp1.Sweep "
+                + " by the cluster; results.csv says why). To run it again, add --resume to the same command:\n  java rp1.Sweep "
                 + String.join(" ", args) + " --resume"), sweeps.err());
 
         Files.delete(dir.resolve("out/runs/2-home"));
