@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.Locale;
 
+import rp1.io.IoFailures;
 import rp1.io.WholeFiles;
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
@@ -91,7 +92,13 @@ public final class Replay {
                 err.println("rp1.Replay: " + o.recording + ":" + recording.tornLine() + ": the last line was cut off"
                         + " while it was being written (the run was killed); it is left out");
             }
-            Replayer replayer = Replayer.prepare(recording, o.events, log(err));
+            Replayer replayer;
+            try {
+                replayer = Replayer.prepare(recording, o.events, log(err));
+            } catch (IOException e) {
+                err.println("rp1.Replay: cannot write the event log " + o.events + ": " + IoFailures.why(e));
+                return 1;
+            }
             RunStatistics paths = RunStatistics.watch(replayer.simulation());
             RunTrace trace = o.html == null ? null : RunTrace.attach(replayer.simulation());
             Replayer.Outcome outcome = replayer.run(o.until);
@@ -102,13 +109,23 @@ public final class Replay {
             if (o.snapshot != null) {
                 Renderer renderer = new Renderer(replayer.simulation().getWorld().getPlan());
                 WorldSnapshot snapshot = WorldSnapshot.of(replayer.simulation().getWorld(), outcome.time());
-                Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, paths.trails()), o.snapshot);
+                try {
+                    Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, paths.trails()), o.snapshot);
+                } catch (IOException e) {
+                    err.println("rp1.Replay: cannot write the picture " + o.snapshot + ": " + IoFailures.why(e));
+                    return 1;
+                }
             }
             if (trace != null) {
-                ReplayPage.write(trace, o.recording.getFileName().toString(), outcome.time(), o.html);
+                try {
+                    ReplayPage.write(trace, o.recording.getFileName().toString(), outcome.time(), o.html);
+                } catch (IOException e) {
+                    err.println("rp1.Replay: cannot write the page " + o.html + ": " + IoFailures.why(e));
+                    return 1;
+                }
             }
             return report(recording, outcome, o, out, err);
-        } catch (RecordingException | IOException e) {
+        } catch (RecordingException e) {
             err.println("rp1.Replay: " + e.getMessage());
             return 1;
         }

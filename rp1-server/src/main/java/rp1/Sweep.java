@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
+import rp1.io.IoFailures;
 import rp1.simulator.batch.Batch;
 import rp1.simulator.batch.Interruption;
 import rp1.simulator.batch.Progress;
@@ -191,7 +192,7 @@ public final class Sweep {
                 err.println("rp1.Sweep: no replay page for " + failure);
             }
         } catch (IOException e) {
-            err.println("rp1.Sweep: cannot write " + dir.resolve(SweepIndex.NAME) + ": " + e.getMessage());
+            err.println("rp1.Sweep: cannot write " + dir.resolve(SweepIndex.NAME) + ": " + IoFailures.why(e));
         }
     }
 

@@ -8,6 +8,7 @@ import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 
+import rp1.io.IoFailures;
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
 import rp1.simulator.batch.RunStatistics;
@@ -97,7 +98,8 @@ public final class SnapshotWriter implements AutoCloseable {
         try {
             Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, trails), target);
         } catch (IOException | RuntimeException e) {
-            String why = "cannot write the picture " + target + ": " + e.getMessage();
+            String why = "cannot write the picture " + target + ": "
+                    + (e instanceof IOException io ? IoFailures.why(io) : e.getMessage());
             if (failure == null) {
                 failure = why;
             }

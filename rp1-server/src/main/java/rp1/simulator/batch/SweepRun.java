@@ -17,6 +17,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 
+import rp1.io.IoFailures;
 import rp1.simulator.Simulation;
 import rp1.simulator.config.ServerArguments;
 import rp1.simulator.launch.ClientClassPath;
@@ -103,7 +104,7 @@ public final class SweepRun {
         try {
             client = clientCommand(dir);
         } catch (IOException e) {
-            return report(RunReport.failed("cannot read " + CLIENT_COMMAND + ": " + e.getMessage(), ExitStatus.STARTUP_FAILED));
+            return report(RunReport.failed("cannot read " + CLIENT_COMMAND + ": " + IoFailures.why(e), ExitStatus.STARTUP_FAILED));
         }
         RunningServer server;
         try {

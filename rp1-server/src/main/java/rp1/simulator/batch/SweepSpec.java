@@ -14,6 +14,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 
+import rp1.io.IoFailures;
+
 /**
  * What decides a sweep's runs and their rows: the properties' text, the floor plans (names and text),
  * the seeds, the varied keys and their values, the {@code --client} and the timeout; not {@code --jobs}
@@ -83,7 +85,7 @@ final class SweepSpec {
         } catch (NoSuchFileException e) {
             throw new SweepException("--resume: " + dir + " holds no sweep to go on with (it has no " + FILE + ")");
         } catch (IOException e) {
-            throw new SweepException("--resume: cannot read " + dir.resolve(FILE) + ": " + e.getMessage());
+            throw new SweepException("--resume: cannot read " + dir.resolve(FILE) + ": " + IoFailures.why(e));
         }
         Map<String, String> v = new LinkedHashMap<>();
         for (String line : lines) {

@@ -10,6 +10,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Properties;
 
+import rp1.io.IoFailures;
+
 /**
  * Finds the server's properties file and floor plan. A properties name given with {@code -p} is
  * looked for in the working directory, then as {@code Properties/NAME} on the class path; without
@@ -86,7 +88,7 @@ public final class ResourceLocator {
         try {
             return new Found(new String(Files.readAllBytes(file), StandardCharsets.UTF_8), file.toString());
         } catch (IOException e) {
-            throw new ConfigException("cannot read " + file + ": " + e.getMessage(), e);
+            throw new ConfigException("cannot read " + file + ": " + IoFailures.why(e), e);
         }
     }
 

@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.SortedMap;
 import java.util.TreeMap;
 
+import rp1.io.IoFailures;
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsPlan;
@@ -121,7 +122,7 @@ public final class ServerLauncher {
         try {
             return ServerLog.open(file, config.logToSystemOut, config.logVerbose);
         } catch (IOException e) {
-            throw new StartupException("cannot create the log file " + file + " (logFileName): " + e.getMessage());
+            throw new StartupException("cannot create the log file " + file + " (logFileName): " + IoFailures.why(e));
         }
     }
 
@@ -158,7 +159,7 @@ public final class ServerLauncher {
         } catch (RsParsingException e) {
             throw new StartupException(e.getMessage());
         } catch (IOException e) {
-            throw new StartupException("cannot read the floor plan " + config.floorPlanFileName + ": " + e.getMessage());
+            throw new StartupException("cannot read the floor plan " + config.floorPlanFileName + ": " + IoFailures.why(e));
         }
     }
 

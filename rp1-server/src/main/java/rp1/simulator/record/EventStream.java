@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.zip.CRC32;
 
+import rp1.io.IoFailures;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.event.RsEvent;
 import rp1.simulator.Simulation;
@@ -70,7 +71,7 @@ public final class EventStream implements Simulation.EventListener {
             try {
                 out.write(line);
             } catch (IOException e) {
-                stop("cannot write the event log " + out.file() + ": " + e.getMessage());
+                stop("cannot write the event log " + out.file() + ": " + IoFailures.why(e));
             }
         }
     }
@@ -83,7 +84,7 @@ public final class EventStream implements Simulation.EventListener {
         try {
             out.flush();
         } catch (IOException e) {
-            stop("cannot write the event log " + out.file() + ": " + e.getMessage());
+            stop("cannot write the event log " + out.file() + ": " + IoFailures.why(e));
         }
     }
 

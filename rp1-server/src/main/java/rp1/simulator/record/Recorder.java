@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
+import rp1.io.IoFailures;
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.ViewInput;
 import rp1.simulator.scheduler.Input;
@@ -156,7 +157,7 @@ public final class Recorder implements InputQueue.Listener {
         try {
             out.flush();
         } catch (IOException e) {
-            breakOff("cannot write: " + e.getMessage());
+            breakOff("cannot write: " + IoFailures.why(e));
         }
     }
 

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
+import rp1.io.IoFailures;
 import rp1.simulator.world.WorldModel;
 
 /**
@@ -47,7 +48,7 @@ public final class RecordingReader {
         } catch (CharacterCodingException e) {
             throw new RecordingException(path + ": not a recording (not UTF-8 text)");
         } catch (IOException e) {
-            throw new RecordingException("cannot read the recording " + path + ": " + e.getMessage(), e);
+            throw new RecordingException("cannot read the recording " + path + ": " + IoFailures.why(e), e);
         }
         return parse(path.toString(), text);
     }

@@ -8,6 +8,7 @@ import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 
+import rp1.io.IoFailures;
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
 
@@ -77,7 +78,7 @@ public final class RunRecords implements AutoCloseable {
                 recorder = Recorder.open(recording, header, simulation.getScheduler(), log);
             } catch (IOException e) {
                 events.abandon();
-                throw new IOException("cannot create the recording " + recording + " (recordFileName): " + e.getMessage(), e);
+                throw new IOException("cannot create the recording " + recording + " (recordFileName): " + IoFailures.why(e), e);
             }
             simulation.getInputs().setListener(recorder);
         }
@@ -89,7 +90,7 @@ public final class RunRecords implements AutoCloseable {
         try {
             return EventStream.toFile(file, log);
         } catch (IOException e) {
-            throw new IOException("cannot create the event log " + file + " (eventLogFileName): " + e.getMessage(), e);
+            throw new IOException("cannot create the event log " + file + " (eventLogFileName): " + IoFailures.why(e), e);
         }
     }
 

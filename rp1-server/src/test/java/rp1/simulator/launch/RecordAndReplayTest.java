@@ -128,6 +128,29 @@ class RecordAndReplayTest {
         return robot;
     }
 
+    /** A recording that is not there, or an output that cannot be written, is told as such, with the file. */
+    @Test
+    void aReplayThatCannotReadOrWriteSaysWhy() throws Exception {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream errors = new PrintStream(err, true, StandardCharsets.UTF_8);
+        Path missing = dir.resolve("nosuch.rec");
+        assertEquals(1, Replay.run(new String[] {missing.toString()}, System.out, errors));
+        assertEquals("rp1.Replay: cannot read the recording " + missing + ": no such file or folder\n",
+                err.toString(StandardCharsets.UTF_8));
+
+        RunningServer server = TestServer.start(dir, with("simulationSpeed=max", "interlockEnabled=true"));
+        TcpRobot robot = placed(server, "alone", 1);
+        server.stop();
+        robot.leave();
+        err.reset();
+        Path inTheWay = Files.writeString(dir.resolve("ro"), "a file, not a folder");
+        Path picture = inTheWay.resolve("end.png");
+        assertEquals(1, Replay.run(new String[] {dir.resolve("run.rec").toString(), "--snapshot", picture.toString()},
+                new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8), errors));
+        assertEquals("rp1.Replay: cannot write the picture " + picture + ": a file of that name is in the way\n",
+                err.toString(StandardCharsets.UTF_8));
+    }
+
     private void assertReplayIsTheRun() throws IOException {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
