@@ -25,7 +25,7 @@ public final class ResultsNotes {
         Map<String, String[]> c = new LinkedHashMap<>();
         c.put("seed", new String[] {"", "the run's randomSeed"});
         c.put("plan", new String[] {"", "the floor plan"});
-        c.put("run", new String[] {"", "the run's folder (recording.txt, events.txt, end.png, run.ini, server.log)"});
+        c.put("run", new String[] {"", "the run's folder (recording.txt, events.txt, run.ini, server.log; end.png with --pictures)"});
         c.put("robot", new String[] {"", "the robot's name, its body's (with #N when robots share one)"});
         c.put("start_x", new String[] {"m", "where the robot was first placed"});
         c.put("start_y", new String[] {"m", ""});
