@@ -15,9 +15,11 @@ import rp1.simulator.batch.Progress;
 import rp1.simulator.batch.ResultsCsv;
 import rp1.simulator.batch.ResultsNotes;
 import rp1.simulator.batch.RunEngine;
+import rp1.simulator.batch.RunReport;
 import rp1.simulator.batch.SummaryCsv;
 import rp1.simulator.batch.SweepException;
 import rp1.simulator.batch.SweepOptions;
+import rp1.simulator.config.ServerConfig;
 import rp1.view.SweepPicture;
 import rp1.web.SweepIndex;
 
@@ -163,6 +165,11 @@ public final class Sweep {
             }
             out.println("rp1.Sweep: " + (outcomes.size() - failed) + " runs ended as asked, " + failed + " failed; "
                     + batch.out().resolve("results.csv") + ", " + summary + ", " + batch.out().resolve(SweepIndex.NAME));
+            for (String unread : unreadParameters(batch.variedKeys(), outcomes)) {
+                err.println("rp1.Sweep: --vary " + unread + ": no robot asked for it (RsClient.getRunParameter(\""
+                        + unread.substring(ServerConfig.PARAMETER_PREFIX.length()) + "\")), so its configurations differ by its name"
+                        + " alone; is the name the robot's?");
+            }
             String note = batch.engineNote();
             if (note != null) {
                 out.println("rp1.Sweep: " + note);
@@ -183,6 +190,23 @@ public final class Sweep {
             err.println("rp1.Sweep: interrupted");
             return 1;
         }
+    }
+
+    /**
+     * The varied parameters ({@code param.NAME}) that no run's robot asked for, of the runs whose
+     * reports know what their robots asked (loaded robots' runs carried out now); none if no report does.
+     */
+    static List<String> unreadParameters(List<String> varied, List<Batch.Outcome> outcomes) {
+        List<RunReport> known = outcomes.stream().map(Batch.Outcome::report).filter(r -> r.parametersAsked() != null)
+                .toList();
+        List<String> unread = new ArrayList<>();
+        for (String key : varied) {
+            String name = key.startsWith(ServerConfig.PARAMETER_PREFIX) ? key.substring(ServerConfig.PARAMETER_PREFIX.length()) : null;
+            if (name != null && !known.isEmpty() && known.stream().noneMatch(r -> r.parametersAsked().contains(name))) {
+                unread.add(key);
+            }
+        }
+        return unread;
     }
 
     /** Writes the sweep's index.html (with each run's replay page if asked); a failure is told, not fatal. */

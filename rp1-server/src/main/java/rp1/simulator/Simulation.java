@@ -68,6 +68,7 @@ public final class Simulation {
     private volatile Runnable whenDeserted = () -> { };
     private volatile ClientBudgets clientBudgets = ClientBudgets.DEFAULTS;
     private final ReportedResults reportedResults = new ReportedResults();
+    private final AskedParameters askedParameters = new AskedParameters();
 
     public Simulation(RsPlan plan, SimulationSettings settings, RsLogInterface log) {
         this.settings = settings;
@@ -119,6 +120,11 @@ public final class Simulation {
     /** The results the clients reported of their own (a sweep's {@code result.NAME} columns). */
     public ReportedResults getReportedResults() {
         return reportedResults;
+    }
+
+    /** The names of the run's parameters its loaded clients asked for. */
+    public AskedParameters getAskedParameters() {
+        return askedParameters;
     }
 
     public RsLogInterface getLog() {

@@ -20,16 +20,26 @@ import java.util.Properties;
  * @param endReason  {@code max-simulation-time}, {@code clients-done}, {@code nobody-left} (every robot
  *                   and client left), {@code stopped}, or what went wrong
  * @param exitStatus the server's exit status (docs/guide.md section 4), or the process's
+ * @param parametersAsked the run's parameters ({@code param.NAME}) its loaded robots asked for, by
+ *                   name; null if that is not known (a {@code --client} program's run, a run that
+ *                   did not start, a row read back from {@code results.csv})
  */
-public record RunReport(double endTime, String endReason, int exitStatus, List<RobotResult> robots) {
+public record RunReport(double endTime, String endReason, int exitStatus, List<RobotResult> robots,
+                        List<String> parametersAsked) {
     /** The status of a run stopped because it outlived the sweep's {@code --timeout}, as timeout(1) has it. */
     public static final int TIMED_OUT = 124;
     /** The file a run leaves in its folder. */
     public static final String FILE = "result.txt";
 
-    /** Copies the list. */
+    /** Copies the lists. */
     public RunReport {
         robots = List.copyOf(robots);
+        parametersAsked = parametersAsked == null ? null : List.copyOf(parametersAsked);
+    }
+
+    /** A report that does not know which parameters the robots asked for. */
+    public RunReport(double endTime, String endReason, int exitStatus, List<RobotResult> robots) {
+        this(endTime, endReason, exitStatus, robots, null);
     }
 
     /** The start of the reason of a run whose folder or process could not be made. */
@@ -89,6 +99,9 @@ public record RunReport(double endTime, String endReason, int exitStatus, List<R
         p.put("end_time", Double.toString(endTime));
         p.put("end_reason", endReason);
         p.put("exit_status", Integer.toString(exitStatus));
+        if (parametersAsked != null) {
+            p.put("parameters_asked", String.join(",", parametersAsked));
+        }
         p.put("robots", Integer.toString(robots.size()));
         for (int i = 0; i < robots.size(); i++) {
             RobotResult r = robots.get(i);
@@ -173,8 +186,10 @@ public record RunReport(double endTime, String endReason, int exitStatus, List<R
                         real(p, k + "distance"), Integer.parseInt(required(p, k + "collisions")),
                         real(p, k + "first_collision_time"), Long.parseLong(required(p, k + "events")), results));
             }
+            String asked = p.getProperty("parameters_asked");
             return new RunReport(real(p, "end_time"), required(p, "end_reason"),
-                    Integer.parseInt(required(p, "exit_status")), robots);
+                    Integer.parseInt(required(p, "exit_status")), robots,
+                    asked == null ? null : asked.isEmpty() ? List.of() : List.of(asked.split(",")));
         } catch (NumberFormatException e) {
             throw new IOException(dir.resolve(FILE) + ": not a run's report: " + e.getMessage(), e);
         }

@@ -133,7 +133,9 @@ public final class SweepRun {
                         + " wall time", timeoutSeconds), RunReport.TIMED_OUT));
             }
             List<RobotResult> results = external == null ? robots : withResults(robots, external.finish());
-            return report(new RunReport(endTime, server.getStopReason(), status.getAsInt(), results));
+            // Which parameters a --client program reads is not known here.
+            List<String> asked = external == null ? server.getSimulation().getAskedParameters().names() : null;
+            return report(new RunReport(endTime, server.getStopReason(), status.getAsInt(), results, asked));
         } catch (IOException e) {
             server.stop();
             return report(RunReport.failed("the client could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED));

@@ -120,8 +120,8 @@ final class ClientLauncher implements LoadedClient.Listener {
                 }
             }
             if (c.client instanceof RsClient rs) {
-                rs.setRunContext(new LoadedRunContext(config.parameters, simulation.getSeed(),
-                        simulation.getReportedResults(), session));
+                rs.setRunContext(new LoadedRunContext(config.parameters, simulation.getAskedParameters(),
+                        simulation.getSeed(), simulation.getReportedResults(), session));
             }
         }
         Thread starter = new Thread(() -> startInOrder(whenStarted), "dlc start");

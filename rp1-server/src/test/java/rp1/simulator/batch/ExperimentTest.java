@@ -127,6 +127,27 @@ class ExperimentTest {
                 byRun(table("process", "results.csv")), "a process of its own gives the same rows");
     }
 
+    /**
+     * A varied parameter that the robot never asks for is told, in a process of its own as in the
+     * sweep's: its configurations are the same robot, and a mistyped name is the likely cause.
+     */
+    @Test
+    void aVariedParameterNoRobotAsksForIsTold() throws Exception {
+        Path p = properties();
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.sped=0.1,0.3", "--vary",
+                "param.speed=0.1,0.2", "--out", dir.resolve("typo").toString()), sweeps.err());
+        assertEquals("rp1.Sweep: --vary param.sped: no robot asked for it (RsClient.getRunParameter(\"sped\")), so its"
+                + " configurations differ by its name alone; is the name the robot's?\n", sweeps.err());
+        sweeps.reset();
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.sped=0.1", "--isolation", "process",
+                "--out", dir.resolve("process").toString()), sweeps.err());
+        assertTrue(sweeps.err().contains("--vary param.sped: no robot asked for it"), sweeps.err());
+        sweeps.reset();
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.speed=0.1,0.2", "--out",
+                dir.resolve("read").toString()), sweeps.err());
+        assertEquals("", sweeps.err(), "the robot asks for speed");
+    }
+
     @Test
     void resumeRefusesAnotherGrid() throws Exception {
         Path p = properties();

@@ -27,6 +27,19 @@ class RunReportTest {
     }
 
     @Test
+    void theParametersTheRobotsAskedForReadBackAndUnknownStaysUnknown(@TempDir Path dir) throws Exception {
+        RunReport asked = new RunReport(30.0, "clients-done", 0, List.of(), List.of("speed", "place"));
+        asked.write(dir);
+        assertEquals(asked, RunReport.read(dir));
+        RunReport none = new RunReport(30.0, "clients-done", 0, List.of(), List.of());
+        none.write(dir);
+        assertEquals(List.of(), RunReport.read(dir).parametersAsked());
+        RunReport unknown = new RunReport(30.0, "clients-done", 0, List.of());
+        unknown.write(dir);
+        assertEquals(null, RunReport.read(dir).parametersAsked(), "a --client program's run");
+    }
+
+    @Test
     void entriesAreEscapedSoThatPropertiesLoadReadsThemBack() throws Exception {
         Random random = new Random(11);
         String alphabet = " =:#!\\\t\n\r\fabc.,é€\u0001\u007f\u00a0xyz";
