@@ -132,6 +132,24 @@ class InstalledCommandTest {
         }
     }
 
+    /** The guide's sweep of the template robot: its sweep.ini runs at full speed, each run a fraction of a second. */
+    @Test
+    void theTemplateRobotSweepsWithItsSweepProperties() throws Exception {
+        Path template = Paths.get(System.getProperty("rp1.root", "..")).resolve("examples/my-robot");
+        assertEquals(0, ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", dir.resolve("classes").toString(),
+                "-cp", System.getProperty("java.class.path"),
+                template.resolve("src/main/java/mybot/MyRobot.java").toString()));
+        Files.copy(template.resolve("sweep.ini"), dir.resolve("sweep.ini"));
+        Result sweep = rp1("sweep", "-cp", "classes", "-p", "sweep.ini", "--seeds", "1-4", "--out", "sweep");
+        assertEquals(0, sweep.status(), sweep.output());
+        List<String> rows = Files.readAllLines(dir.resolve("sweep/results.csv"));
+        assertEquals(5, rows.size(), rows.toString());
+        for (String row : rows.subList(1, 5)) {
+            assertTrue(row.contains(",MyRobot,") && row.contains(",30,1,0,") && row.contains(",max-simulation-time,"),
+                    "30 simulated seconds, a metre driven, no collision: " + row);
+        }
+    }
+
     private static void awaitText(Path file, String text) throws Exception {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         while (!(Files.exists(file) && Files.readString(file).contains(text))) {
