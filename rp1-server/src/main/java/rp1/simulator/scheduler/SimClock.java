@@ -7,8 +7,9 @@ package rp1.simulator.scheduler;
  * since the clock began. A task is never run before its deadline; when the simulation falls behind (a
  * late wake-up, a client slow to acknowledge an event) the tasks that have fallen due run back to back
  * until it has caught up, so lateness is made up instead of accumulating. The catching up is bounded:
- * the clock is never more than {@link #MAX_LAG_SECONDS} of wall time behind, so a long pause (a
- * debugger, a client that thinks for a minute) is not followed by a burst of that length.</li>
+ * the clock is never more than {@link #MAX_LAG_SECONDS} of wall time behind the work that fell due, so
+ * a long pause (a debugger, a client that thinks for a minute) is not followed by a burst of that
+ * length; time with nothing due passes as the wall clock says.</li>
  * <li>Lockstep ({@link #lockstep()}, {@code simulationSpeed=max}): the wall clock is never read; time
  * jumps to each task as it runs.</li>
  * <li>Replay ({@link #replay()}): lockstep that cannot be held. A replay runs the recorded task
