@@ -147,10 +147,18 @@ public final class LiveView implements AutoCloseable {
         }
     }
 
-    /** One browser's stream: the chunks after those its page holds, then each new one as it comes. */
+    /**
+     * One browser's stream: the chunks after those its page holds, then each new one as it comes, and
+     * at the run's end an {@code end} event. Each chunk carries its number as its id (the count of
+     * chunks up to it), so that a browser that reconnects, as browsers do by themselves after a
+     * dropped connection, says with {@code Last-Event-ID} how far it got and is sent the rest, not
+     * again everything since its page loaded (the page adds positions up, so a chunk twice moved the
+     * robots). After the {@code end} event the page stops asking.
+     */
     private void events(HttpExchange x) throws IOException {
         try (x) {
-            int next = Integer.parseInt(query(x).getOrDefault("from", "0"));
+            String seen = x.getRequestHeaders().getFirst("Last-Event-ID");
+            int next = Math.max(0, Integer.parseInt(seen != null ? seen.trim() : query(x).getOrDefault("from", "0")));
             x.getResponseHeaders().set("Content-Type", "text/event-stream; charset=utf-8");
             x.getResponseHeaders().set("Cache-Control", "no-store");
             x.sendResponseHeaders(200, 0);
@@ -162,9 +170,12 @@ public final class LiveView implements AutoCloseable {
                 List<String> fresh = awaitChunks(next);
                 StringBuilder text = new StringBuilder(fresh.isEmpty() && !last ? ":\n\n" : "");
                 for (String c : fresh) {
-                    text.append("data: ").append(c).append("\n\n");
+                    next++;
+                    text.append("id: ").append(next).append("\ndata: ").append(c).append("\n\n");
                 }
-                next += fresh.size();
+                if (last) {
+                    text.append("event: end\ndata: \n\n");
+                }
                 out.write(text.toString().getBytes(StandardCharsets.UTF_8));
                 out.flush();
             }

@@ -122,6 +122,48 @@ class LiveViewTest {
         assertEquals(List.of(1, 2, 1.25, 0.75), List.of(e.button, e.clickCount, e.x, e.y));
     }
 
+    /**
+     * A browser whose connection dropped asks again saying how far it got (Last-Event-ID), and is sent
+     * the chunks after that one, not again all those since its page loaded: the page adds positions
+     * up, so a chunk sent twice moved the robots. At the run's end the stream says so.
+     */
+    @Test
+    void aBrowserThatReconnectsIsSentOnlyTheChunksItHasNotHad(@TempDir Path dir) throws Exception {
+        int port = freePort();
+        Runs.properties(dir, 60.0, "simulationSpeed=1", "viewPort=" + port);
+        RunningServer server = Runs.start(dir, LaunchOptions.defaults());
+        List<String> lines = new ArrayList<>();
+        try {
+            HttpURLConnection first = (HttpURLConnection) new URL("http://127.0.0.1:" + port + "/events?from=0")
+                    .openConnection();
+            try (BufferedReader in = new BufferedReader(new InputStreamReader(first.getInputStream(), StandardCharsets.UTF_8))) {
+                List<String> ids = new ArrayList<>();
+                for (String line = in.readLine(); ids.size() < 4; line = in.readLine()) {
+                    if (line.startsWith("id: ")) {
+                        ids.add(line);
+                    }
+                }
+                assertEquals(List.of("id: 1", "id: 2", "id: 3", "id: 4"), ids, "each chunk is numbered");
+            }
+            HttpURLConnection again = (HttpURLConnection) new URL("http://127.0.0.1:" + port + "/events?from=0")
+                    .openConnection();
+            again.setRequestProperty("Last-Event-ID", "3");
+            BufferedReader in = new BufferedReader(new InputStreamReader(again.getInputStream(), StandardCharsets.UTF_8));
+            String line = in.readLine();
+            while (!line.startsWith("id: ")) {
+                line = in.readLine();
+            }
+            assertEquals("id: 4", line, "the stream goes on after the last chunk the browser had");
+            server.stop();
+            for (; line != null; line = in.readLine()) {
+                lines.add(line);
+            }
+        } finally {
+            server.stop();
+        }
+        assertTrue(lines.contains("event: end"), "the run's end is told, so that the page stops asking: " + lines);
+    }
+
     static int post(int port, String form) throws IOException {
         HttpURLConnection c = (HttpURLConnection) new URL("http://127.0.0.1:" + port + "/click").openConnection();
         c.setRequestMethod("POST");
