@@ -8,8 +8,9 @@ Once per simulated second it prints where it is::
 
     position t=<sim time> x=<m> y=<m> heading=<rad>
 
-and after ``--duration`` simulated seconds it disconnects and exits with status 0 (1 if it could
-not connect or be placed, 2 if the simulator went away first).
+and ``--duration`` simulated seconds after it was placed it disconnects and exits with status 0 (1
+if it could not connect or be placed, 2 if the simulator went away first). The seconds count from
+the placement, not from 0: a paced simulator's clock runs from its start, robots or not.
 
     python wanderer.py --host 127.0.0.1 --port 7758 --duration 30
 """
@@ -62,6 +63,8 @@ class Wanderer:
         self.state = "idle"
         self.blocked = 0
         self.placed: Optional[bool] = None
+        #: The simulated time the robot was placed at, from which --duration counts.
+        self.placed_at: Optional[float] = None
 
     def register(self) -> None:
         c = self.client
@@ -89,6 +92,7 @@ class Wanderer:
 
     def on_placement(self, e: rp.PlacementEvent) -> None:
         self.placed = e.valid
+        self.placed_at = e.sim_time
         if not e.valid:
             print(f"wanderer: placement {e.name!r} {PLACEMENT_REFUSED}", file=sys.stderr)
             self.client.stop()
@@ -98,7 +102,7 @@ class Wanderer:
 
     def on_position(self, e: rp.PositionEvent) -> None:
         print(f"position t={e.sim_time:.3f} x={e.x:.3f} y={e.y:.3f} heading={e.orientation:.3f}", flush=True)
-        if e.sim_time >= self.duration:
+        if self.placed_at is not None and e.sim_time >= self.placed_at + self.duration:
             self.client.stop()
 
     def on_range(self, e: rp.RangeSensorEvent) -> None:

@@ -7,6 +7,7 @@ import socket
 import subprocess
 import sys
 import threading
+import time
 from typing import Callable, Dict, List, Optional
 
 import pytest
@@ -190,6 +191,22 @@ def test_the_wanderer_prints_its_position_every_second_and_exits(rp1_server: Loc
     positions = {(m.group(2), m.group(3)) for m in matches}
     assert len(positions) > 6, "the robot moves"
     assert all(0.0 < float(x) < 3.0 and 0.0 < float(y) < 3.0 for x, y in positions), "inside the room"
+
+
+def test_the_wanderers_duration_counts_from_its_placement_on_a_clock_already_running(tmp_path) -> None:
+    """A paced simulator's clock runs from its start, robots or not: a wanderer that connects late
+    still wanders for the seconds it was given, not until the clock reads them."""
+    properties = {"simulationSpeed": "20", "interlockEnabled": "false"}
+    with LocalSimulator(REPO_ROOT / "FloorPlans" / "WhiteRoom.txt", tmp_path, repo_root=REPO_ROOT,
+                        properties=properties) as server:
+        time.sleep(0.5)  # some 10 simulated seconds before the robot connects
+        done = subprocess.run([sys.executable, str(EXAMPLES_DIR / "wanderer.py"), "--host", server.host,
+                               "--port", str(server.port), "--duration", "4"],
+                              capture_output=True, text=True, timeout=LIMIT)
+    assert done.returncode == 0, done.stderr
+    times = [float(line.split()[1][2:]) for line in done.stdout.splitlines()]
+    assert times[0] > 5.0, "the robot connected late: " + done.stdout
+    assert 4 <= len(times) <= 5, "a position a second for its four seconds on the floor: " + done.stdout
 
 
 def test_the_wanderer_leaving_at_a_fixed_time_gives_the_same_run_twice_and_the_server_ends(tmp_path) -> None:
