@@ -29,9 +29,14 @@ final class RunFile {
 
     /**
      * Starts writing {@code file}: creates (or truncates) {@code NAME.part} and removes an older
-     * {@code NAME}, which would otherwise pass for this run's if the run never finished.
+     * {@code NAME}, which would otherwise pass for this run's if the run never finished. A folder of
+     * that name is refused before anything is created: removing it (when empty) or leaving an empty
+     * {@code NAME.part} beside it (when not) would be the run's doing, not the user's.
      */
     static RunFile create(Path file) throws IOException {
+        if (Files.isDirectory(file)) {
+            throw new IOException("it is a folder");
+        }
         Path part = WholeFiles.partOf(file);
         OutputStream out = new BufferedOutputStream(Files.newOutputStream(part), BUFFER);
         try {

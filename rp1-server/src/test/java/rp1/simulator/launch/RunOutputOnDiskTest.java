@@ -2,6 +2,7 @@ package rp1.simulator.launch;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -101,6 +102,23 @@ class RunOutputOnDiskTest {
         assertTrue(TestServer.log(dir).contains("The run's output is not whole: cannot write the picture "
                 + dir.resolve("end.png")), TestServer.log(dir));
         assertFalse(Files.exists(dir.resolve("end.png.part")), "no half-written picture left behind");
+    }
+
+    /** A recording or event log named after a folder is refused, and the folder is left as it was. */
+    @Test
+    void aRecordingOrEventLogNamedAfterAFolderIsRefusedAndTheFolderKept() throws Exception {
+        Files.createDirectories(dir.resolve("empty"));
+        Files.createDirectories(dir.resolve("full/inside"));
+        for (String setting : List.of("recordFileName=empty", "recordFileName=full", "eventLogFileName=empty")) {
+            StartupException e = assertThrows(StartupException.class, () -> TestServer.start(dir,
+                    "enableNetworkClients=false", "simulationSpeed=max", "interlockEnabled=true", "dlcEnabled=true",
+                    "dlcName=" + TestDlc.class.getName(), "exitWhenClientsDone=true", setting));
+            String name = setting.substring(setting.indexOf('=') + 1);
+            assertTrue(e.getMessage().contains(name + " (" + setting.substring(0, setting.indexOf('=')) + "): it is a folder"),
+                    e.getMessage());
+            assertTrue(Files.isDirectory(dir.resolve(name)), "the folder is still there");
+            assertFalse(Files.exists(dir.resolve(name + ".part")), "nothing left beside it");
+        }
     }
 
     @Test
