@@ -204,6 +204,12 @@ final class BodyCodec {
             }
             body.addPart(readPartWithId(in, field, id, type));
         }
+        if (body.getBodyPartArray().length == 0) {
+            // A client library cannot send such a body (section 16 of protocol.md); the original server
+            // exited on the undefined parts. A robot of no parts has nothing to move, touch or record.
+            throw new RsProtocolException("nParts", n == 0 ? "a body needs at least one part"
+                    : "a body needs at least one part of a defined type (all " + n + " are undefined or empty)");
+        }
         return body;
     }
 

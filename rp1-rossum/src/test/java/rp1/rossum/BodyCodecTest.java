@@ -237,6 +237,20 @@ class BodyCodecTest {
         assertNull(got.getBodyPartArray()[0].getColdFillColor());
     }
 
+    /**
+     * A body with nothing in it, or nothing but empty slots and undefined parts, is refused: no client
+     * library sends one, and a robot of no parts could not even be recorded (its encoding refuses it).
+     */
+    @Test
+    void aBodyWithoutAnyDefinedPartIsRefused() {
+        RsProtocolException none = assertThrows(RsProtocolException.class, () -> BodyCodec.decode(hex("0000 00000000")));
+        assertEquals("nParts: a body needs at least one part", none.getMessage());
+        RsProtocolException undefined = assertThrows(RsProtocolException.class,
+                () -> BodyCodec.decode(hex("0000 00000002 ffffffff 00000004 00000000")));
+        assertEquals("nParts: a body needs at least one part of a defined type (all 2 are undefined or empty)",
+                undefined.getMessage());
+    }
+
     @Test
     @Timeout(5)
     void anAbstractSensorRecordIsRefusedNamingThePartAndType() {

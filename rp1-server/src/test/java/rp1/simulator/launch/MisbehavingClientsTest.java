@@ -100,6 +100,37 @@ class MisbehavingClientsTest {
         }
     }
 
+    /**
+     * A body with no part in it is refused with the client's session, naming the field, and the run's
+     * recording goes on whole: accepted, such a body could not be recorded, and the recording stopped
+     * there for every client (the run then ended with status 4).
+     */
+    @Test
+    void anEmptyBodyEndsItsSessionAndTheRecordingStaysWhole() throws Exception {
+        RunningServer server = TestServer.start(dir, "simulationSpeed=10", "waitForClients=0", "recordFileName=run.rec");
+        int port = server.getPort();
+        try {
+            TcpRobot good = TcpRobot.connect(port, "good").startLoop();
+            good.sendHeartbeatRequest(0.1);
+            good.await(RsHeartbeatEvent.class, e -> e.sequence >= 2);
+            RawClient empty = RawClient.connected(port);
+            empty.header(RawClient.BODY);
+            empty.out.writeUTF("");
+            empty.out.writeInt(0);
+            empty.out.flush();
+            TestServer.awaitLog(dir, who(empty) + ": RsConnection terminating due to exception on input: nParts: a body"
+                    + " needs at least one part");
+            int seen = good.events(RsHeartbeatEvent.class).size();
+            good.await(RsHeartbeatEvent.class, e -> e.sequence >= seen + 3);
+            empty.close();
+            good.leave();
+        } finally {
+            server.stop();
+        }
+        assertEquals(ExitStatus.OK, server.awaitExit());
+        assertTrue(java.nio.file.Files.readString(dir.resolve("run.rec")).contains("\nend "), "the recording is whole");
+    }
+
     /** The robots of the dropped clients that had one (the vanishing and the deaf client) have left the world. */
     private static void assertOnlyTheGoodRobotIsLeft(RunningServer server) throws InterruptedException {
         await(() -> server.getSimulation().getWorld().getRobots().size() == 1, Duration.ofSeconds(10),
