@@ -205,11 +205,12 @@ public final class Robot {
     /**
      * The motion the request waiting to start will really make: the request itself, or with wheel
      * slip (docs/behavior.md section 8.9) the request slipped, drawn once, so that the walls it could
-     * meet are gathered for the motion made, not the one commanded. Only when a request waits.
+     * meet are gathered for the motion made, not the one commanded; cut to {@link MotionBounds}. Only
+     * when a request waits.
      */
     RsMotionRequest motionToMake() {
         if (made == null) {
-            made = noise.slip(pending);
+            made = MotionBounds.bounded(noise.slip(pending));
         }
         return made;
     }
