@@ -2,6 +2,7 @@ package rp1;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.FileSystemException;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
@@ -182,8 +183,13 @@ public final class Sweep {
                         + resumeArguments(args));
             }
             return failed == 0 ? 0 : RUN_FAILED;
-        } catch (SweepException | IOException e) {
+        } catch (SweepException e) {
             err.println("rp1.Sweep: " + e.getMessage());
+            return 1;
+        } catch (IOException e) {
+            // A file system's exception is its path alone: say what went wrong with it.
+            err.println("rp1.Sweep: " + (e instanceof FileSystemException f && f.getFile() != null ? f.getFile() + ": " : "")
+                    + IoFailures.why(e));
             return 1;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

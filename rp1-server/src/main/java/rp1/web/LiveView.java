@@ -89,7 +89,14 @@ public final class LiveView implements AutoCloseable {
         if (config.viewPort == 0) {
             return () -> { };
         }
-        LiveView view = start(simulation, config.bindAddress, config.viewPort, config.floorPlanFileName);
+        LiveView view;
+        try {
+            view = start(simulation, config.bindAddress, config.viewPort, config.floorPlanFileName);
+        } catch (IOException e) {
+            throw new IOException("viewPort=" + config.viewPort + ": cannot serve the page on " + config.bindAddress + ":"
+                    + config.viewPort + ": " + e.getMessage()
+                    + (config.viewPort == config.port ? " (it is the simulator's own port; choose another)" : ""), e);
+        }
         log.logIt("X", "The simulation can be watched at http://" + config.bindAddress + ":" + view.port() + "/");
         return view;
     }

@@ -206,8 +206,13 @@ public final class SweepOptions {
             int dash = part.indexOf('-', 1);
             long from = seed(dash < 0 ? part : part.substring(0, dash), spec);
             long to = dash < 0 ? from : seed(part.substring(dash + 1), spec);
-            if (to < from || to - from >= MAX_RUNS) {
-                throw new IllegalArgumentException("--seeds " + spec + ": " + part + " is not a range of seeds");
+            if (to < from) {
+                throw new IllegalArgumentException("--seeds " + spec + ": " + part + " is not a range of seeds"
+                        + " (the first is above the last)");
+            }
+            if (to - from >= MAX_RUNS) {
+                throw new IllegalArgumentException("--seeds " + spec + ": " + part + " is more than " + MAX_RUNS
+                        + " seeds, the most runs a sweep makes");
             }
             for (long s = from; s <= to && seeds.size() <= MAX_RUNS; s++) {
                 seeds.add(s);
@@ -263,7 +268,7 @@ public final class SweepOptions {
             d = Double.NaN;
         }
         if (!(d > 0.0) || d > max) {
-            throw new IllegalArgumentException(option + " needs a positive number, got " + v);
+            throw new IllegalArgumentException(option + " needs a positive number up to " + (long) max + ", got " + v);
         }
         return d;
     }

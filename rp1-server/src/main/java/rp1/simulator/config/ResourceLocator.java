@@ -55,6 +55,9 @@ public final class ResourceLocator {
         if (Files.isRegularFile(file)) {
             return file(file);
         }
+        if (Files.isDirectory(file)) {
+            throw new ConfigException("properties " + name + ": " + file.toAbsolutePath() + " is a folder, not a file");
+        }
         return resource("Properties/" + name, "properties " + name
                 + " (looked in " + workingDirectory.toAbsolutePath() + " and on the class path)");
     }
@@ -75,6 +78,9 @@ public final class ResourceLocator {
         Path direct = workingDirectory.resolve(name);
         if (Files.isRegularFile(direct)) {
             return file(direct);
+        }
+        if (Files.isDirectory(direct)) {
+            throw new ConfigException("floor plan " + name + ": " + direct.toAbsolutePath() + " is a folder, not a file");
         }
         Path inFolder = workingDirectory.resolve("FloorPlans").resolve(name);
         if (Files.isRegularFile(inFolder)) {
@@ -100,7 +106,7 @@ public final class ResourceLocator {
         try (InputStream in = url.openStream()) {
             return new Found(new String(in.readAllBytes(), StandardCharsets.UTF_8), url.toString());
         } catch (IOException e) {
-            throw new ConfigException("cannot read " + url + ": " + e.getMessage(), e);
+            throw new ConfigException("cannot read " + url + ": " + IoFailures.why(e), e);
         }
     }
 }

@@ -90,6 +90,9 @@ public final class RunningServer {
         try {
             view = parts.viewHook.open(new ViewHook.Context(parts.simulation, parts.config, parts.log,
                     () -> requestStop(ExitStatus.OK)));
+        } catch (IOException e) {
+            // Files and ports the view was asked for: their messages name them.
+            throw new StartupException("cannot open the view: " + e.getMessage());
         } catch (Exception e) {
             throw new StartupException("cannot open the view: " + LoadedClient.describe(e));
         }

@@ -1,6 +1,8 @@
 package rp1.simulator.launch;
 
 import java.io.IOException;
+import java.net.BindException;
+import java.net.UnknownHostException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.SortedMap;
@@ -207,9 +209,11 @@ public final class ServerLauncher {
             log.log("Socket ready: " + config.bindAddress + ":" + listener.getPort());
             return listener;
         } catch (IOException e) {
-            throw new StartupException(String.format(Locale.ROOT,
-                    "cannot listen on %s:%d: %s (is another simulator running? choose another port with the port key)",
-                    config.bindAddress, port, e.getMessage()));
+            // The likely cause, by what failed: the port taken, or an address this machine does not have.
+            String hint = e instanceof BindException ? " (is another simulator running? choose another port with the port key)"
+                    : e instanceof UnknownHostException ? " (bindAddress names no address of this machine)" : "";
+            throw new StartupException(String.format(Locale.ROOT, "cannot listen on %s:%d: %s%s",
+                    config.bindAddress, port, e.getMessage(), hint));
         }
     }
 }

@@ -98,4 +98,28 @@ class SweepTest {
         assertThrows(IllegalArgumentException.class, () -> SweepOptions.seeds("3-1"));
         assertThrows(IllegalArgumentException.class, () -> SweepOptions.seeds("a"));
     }
+
+    /** A limit the command line runs into is said, with the limit. */
+    @Test
+    void tooManySeedsOrTooLongATimeoutSayWhereTheLimitIs() throws Exception {
+        IllegalArgumentException seeds = assertThrows(IllegalArgumentException.class,
+                () -> SweepOptions.seeds("1-100000000"));
+        assertEquals("--seeds 1-100000000: 1-100000000 is more than 100000 seeds, the most runs a sweep makes",
+                seeds.getMessage());
+        Path p = properties("exitWhenClientsDone=true");
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--timeout", "1e308", "--out",
+                dir.resolve("out").toString()));
+        assertTrue(sweeps.err().startsWith("rp1.Sweep: --timeout needs a positive number up to 10000000, got 1e308\n"),
+                sweeps.err());
+    }
+
+    /** An output folder that cannot be made says why, not only where. */
+    @Test
+    void anOutputFolderUnderAFileSaysWhyItCannotBeMade() throws Exception {
+        Path p = properties("exitWhenClientsDone=true");
+        Path file = Files.writeString(dir.resolve("a-file"), "not a folder");
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--out", file.resolve("out").toString()));
+        assertTrue(sweeps.err().contains(": a file of that name is in the way") || sweeps.err().contains(": Not a directory"),
+                sweeps.err());
+    }
 }
