@@ -82,6 +82,18 @@ class LiveViewTest {
         }
     }
 
+    /** A page that cannot be served is refused at start-up naming viewPort, and why. */
+    @Test
+    void aViewPortTakenByTheSimulatorItselfIsRefusedNamingIt(@TempDir Path dir) throws Exception {
+        int port = freePort();
+        Runs.properties(dir, 5.0, "simulationSpeed=1", "enableNetworkClients=true", "port=" + port, "viewPort=" + port);
+        rp1.simulator.launch.StartupException e = assertThrows(rp1.simulator.launch.StartupException.class,
+                () -> Runs.start(dir, LaunchOptions.defaults()));
+        assertTrue(e.getMessage().startsWith("cannot open the view: viewPort=" + port + ": cannot serve the page on "),
+                e.getMessage());
+        assertTrue(e.getMessage().endsWith("(it is the simulator's own port; choose another)"), e.getMessage());
+    }
+
     @Test
     void viewPortIsOffByDefaultAndAPortOtherwise() throws Exception {
         Properties p = new Properties();
