@@ -120,7 +120,12 @@ final class SparkCommand {
         Runtime.getRuntime().addShutdownHook(waitForChild);
         try {
             int status = child.waitFor();
-            Runtime.getRuntime().removeShutdownHook(waitForChild);
+            try {
+                Runtime.getRuntime().removeShutdownHook(waitForChild);
+            } catch (IllegalStateException e) {
+                // Ctrl-C reached this process too and it is shutting down: the hook ends it with the
+                // child's status.
+            }
             return status;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -62,8 +62,20 @@ public final class Sweep {
      * its advice on going on after an interruption name that command.
      */
     public static void main(String command, String[] args) {
-        Interruption.runAndExit(command, i -> run(command, args, System.out, System.err, System.console() != null, i,
-                null));
+        Interruption.runAndExit(command, i -> run(new Invocation(command, List.of(args)), args, System.out, System.err,
+                System.console() != null, i, null));
+    }
+
+    /**
+     * How the user started the sweep, as its usage and its advice on going on after an interruption
+     * repeat it: the command ({@code rp1 sweep}, {@code java rp1.Sweep}) and the words given after it
+     * (those of rp1-spark's sweep include {@code --master}, and not the {@code --jobs} it works out).
+     */
+    public record Invocation(String command, List<String> words) {
+        /** Copies the words. */
+        public Invocation {
+            words = List.copyOf(words);
+        }
     }
 
     /** The usage of a sweep started as {@code command}, with the options this class adds. */
@@ -109,17 +121,17 @@ public final class Sweep {
      */
     public static int run(String[] args, PrintStream out, PrintStream err, boolean terminal, Interruption interruption,
                           RunEngine.Factory engines) {
-        return run(DIRECT, args, out, err, terminal, interruption, engines);
+        return run(new Invocation(DIRECT, List.of(args)), args, out, err, terminal, interruption, engines);
     }
 
     /**
      * {@link #run(String[], PrintStream, PrintStream, boolean, Interruption, RunEngine.Factory)} for a
-     * sweep started as {@code command} ({@code rp1 sweep}, or {@code rp1 sweep --master URL} for
-     * rp1-spark's): what its usage and its advice on going on after an interruption begin with.
+     * sweep the user started as {@code how} says, which its usage and its advice on going on after an
+     * interruption repeat.
      */
-    public static int run(String command, String[] args, PrintStream out, PrintStream err, boolean terminal,
+    public static int run(Invocation how, String[] args, PrintStream out, PrintStream err, boolean terminal,
                           Interruption interruption, RunEngine.Factory engines) {
-        String usage = usage(command);
+        String usage = usage(how.command());
         SweepOptions options;
         boolean pages = Arrays.asList(args).contains(HTML);
         try {
@@ -160,8 +172,8 @@ public final class Sweep {
                 int missing = batch.runs().size() - outcomes.size();
                 err.println("rp1.Sweep: interrupted; " + outcomes.size() + " of " + batch.runs().size() + " runs finished"
                         + " (" + failed + " failed), in " + batch.out().resolve("results.csv") + " and " + summary
-                        + ". To run the other " + missing + ", add --resume to the same command:\n  " + command + " "
-                        + resumeArguments(args));
+                        + ". To run the other " + missing + ", add --resume to the same command:\n  " + how.command() + " "
+                        + resumeArguments(how.words()));
                 return Interruption.STATUS;
             }
             out.println("rp1.Sweep: " + (outcomes.size() - failed) + " runs ended as asked, " + failed + " failed; "
@@ -179,8 +191,8 @@ public final class Sweep {
             if (notCarriedOut > 0) {
                 err.println("rp1.Sweep: " + notCarriedOut + " of the failed runs " + (notCarriedOut == 1 ? "was" : "were")
                         + " never carried out (not started, or lost by the cluster; results.csv says why). To run "
-                        + (notCarriedOut == 1 ? "it" : "them") + " again, add --resume to the same command:\n  " + command + " "
-                        + resumeArguments(args));
+                        + (notCarriedOut == 1 ? "it" : "them") + " again, add --resume to the same command:\n  " + how.command() + " "
+                        + resumeArguments(how.words()));
             }
             return failed == 0 ? 0 : RUN_FAILED;
         } catch (SweepException e) {
@@ -227,9 +239,9 @@ public final class Sweep {
     }
 
     /** The command line given, with --resume, each argument quoted for a shell if need be. */
-    private static String resumeArguments(String[] args) {
+    private static String resumeArguments(List<String> given) {
         List<String> words = new ArrayList<>();
-        for (String a : args) {
+        for (String a : given) {
             words.add(a.matches("[A-Za-z0-9_./:,=+-]+") ? a : "'" + a.replace("'", "'\\''") + "'");
         }
         if (!words.contains("--resume")) {

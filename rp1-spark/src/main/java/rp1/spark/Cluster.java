@@ -49,6 +49,10 @@ public final class Cluster implements AutoCloseable {
     private final Process master;
     private final String masterUrl;
     private final List<Process> workers = new ArrayList<>();
+    /** A JVM's exit status when Ctrl-C (SIGINT) ended it, as a shell reports it. */
+    private static final int STOPPED_BY_CTRL_C = 130;
+    /** A JVM's exit status when SIGTERM ended it. */
+    private static final int STOPPED_BY_SIGTERM = 143;
     /** Stops the daemons if this JVM ends without closing the cluster: they never outlive it. */
     private final Thread stopOnExit = new Thread(this::stopAll, "stop the cluster");
 
@@ -229,8 +233,15 @@ public final class Cluster implements AutoCloseable {
             out.println("rp1 cluster: master " + cluster.masterUrl() + ", " + workers + " worker" + (workers == 1 ? "" : "s")
                     + " of " + cores + " core" + (cores == 1 ? "" : "s") + " and " + memory + "; logs in " + folder
                     + ". Ctrl-C stops them.\n  rp1 sweep ... --master " + cluster.masterUrl());
-            master(cluster).waitFor();
-            err.println("rp1 cluster: the master stopped; see " + folder.resolve("master.log"));
+            int status = master(cluster).waitFor();
+            if (status == STOPPED_BY_CTRL_C || status == STOPPED_BY_SIGTERM) {
+                // Ctrl-C reaches the whole process group, the master first as often as not: the cluster
+                // was asked to stop, and the hook stops what is left of it.
+                out.println("rp1 cluster: stopped");
+                return 0;
+            }
+            err.println("rp1 cluster: the master stopped by itself (status " + status + "); see "
+                    + folder.resolve("master.log"));
             return 1;
         } catch (IOException e) {
             err.println("rp1 cluster: " + e.getMessage());

@@ -152,6 +152,9 @@ final class SparkRuns implements RunEngine {
     @Override
     public void stopAll() {
         stopping = true;
+        // Cancelled tasks and executors shutting down are logged by Spark as errors with their stack
+        // traces, after the sweep has said how it stopped and how to go on; they are not the user's.
+        spark.setLogLevel("OFF");
         spark.cancelAllJobs();
     }
 }

@@ -34,6 +34,11 @@ public final class SparkSweep {
             "                 (default: the executors' cores when the sweep starts)",
             "  --keep NAMES   files of each run (recording.txt, events.txt, end.png, ... or all) to bring back",
             "                 from the executors whatever their size; others larger than 4 MB stay there");
+    /**
+     * The forms of master URL Spark takes: refused here rather than by Spark, whose refusal comes as an
+     * error logged with its stack trace before the sweep can say a word.
+     */
+    private static final String MASTER_URL = "local(\\[(\\d+|\\*)(,\\d+)?\\])?|local-cluster\\[.+\\]|(spark|k8s|mesos)://.+|yarn";
     /** The command users start a sweep with. */
     private static final String COMMAND = "rp1 sweep";
     /** How long the sweep waits for the first executor of a cluster. */
@@ -71,29 +76,39 @@ public final class SparkSweep {
                 }
             }
         }
+        // The user's own words, for the advice on going on after an interruption (not the --jobs added below).
+        Sweep.Invocation how = new Sweep.Invocation(COMMAND, List.of(args));
         if (master == null) {
-            return Sweep.run(COMMAND, rest.toArray(new String[0]), out, err, terminal, interruption, null);
+            return Sweep.run(how, rest.toArray(new String[0]), out, err, terminal, interruption, null);
         }
         if (rest.contains("-h") || rest.contains("--help")) {
             out.println(Sweep.usage(COMMAND, "--master URL [--keep NAMES]", USAGE.split("\n")));
             return 0;
         }
+        if (!master.matches(MASTER_URL)) {
+            err.println("rp1.Sweep: --master " + master + ": not a master URL Spark knows (local, local[N], local[*],"
+                    + " spark://HOST:PORT, yarn, k8s://...)");
+            return 1;
+        }
         JavaSparkContext spark;
         try {
             spark = new JavaSparkContext(conf(master));
-        } catch (RuntimeException e) {
+        } catch (Exception e) {
+            // Spark's own exceptions (a master URL it cannot parse) are checked ones Java is not told of.
             err.println("rp1.Sweep: --master " + master + ": Spark did not start: " + e.getMessage());
             return 1;
         }
         try {
             if (!jobsGiven) {
-                waitForExecutors(spark, master, out);
+                String missing = waitForExecutors(spark, master, out);
+                if (missing != null) {
+                    err.println("rp1.Sweep: --master " + master + ": " + missing);
+                    return 1;
+                }
                 rest.add("--jobs");
                 rest.add(Integer.toString(Math.min(1000, spark.defaultParallelism())));
             }
-            // The command the sweep names in its advice on going on after an interruption.
-            String command = COMMAND + " --master " + master + (keep.isEmpty() ? "" : " --keep " + String.join(",", keep));
-            return Sweep.run(command, rest.toArray(new String[0]), out, err, terminal, interruption,
+            return Sweep.run(how, rest.toArray(new String[0]), out, err, terminal, interruption,
                     batch -> SparkRuns.open(spark, batch, keep, batch.options().isolation == SweepOptions.Isolation.PROCESS
                             ? new ProcessRun() : new IsolatedRun(), Paths.get("").toAbsolutePath()));
         } finally {
@@ -131,21 +146,26 @@ public final class SparkSweep {
 
     /**
      * On a cluster, until the executors have come (without them, their cores are not known): until
-     * one has, and then no other for a second.
+     * one has, and then no other for a second. Null then; else why none came.
      */
-    private static void waitForExecutors(JavaSparkContext spark, String master, PrintStream out) {
+    private static String waitForExecutors(JavaSparkContext spark, String master, PrintStream out) {
         if (master.startsWith("local")) {
-            return;
+            return null;
         }
         out.println("rp1.Sweep: waiting for the executors of " + master);
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(EXECUTOR_WAIT_SECONDS);
         long quiet = 0;
         int seen = 0;
         while (System.nanoTime() < end) {
+            if (spark.sc().isStopped()) {
+                // Spark gives up on a master that does not answer (after a minute) and stops the context.
+                return "the master did not answer, and Spark gave up on it (is it running, and is this its address?"
+                        + " rp1 cluster starts one)";
+            }
             // The driver is one of the "executors" the tracker lists.
             int now = spark.sc().statusTracker().getExecutorInfos().length - 1;
             if (now > 0 && now == seen && ++quiet >= 10) {
-                return;
+                return null;
             }
             if (now != seen) {
                 quiet = 0;
@@ -155,8 +175,10 @@ public final class SparkSweep {
                 Thread.sleep(100);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
-                return;
+                return "interrupted while waiting for the executors";
             }
         }
+        return seen > 0 ? null : "no executor joined within " + EXECUTOR_WAIT_SECONDS + " s (has the cluster any workers?"
+                + " rp1 cluster --workers N starts them)";
     }
 }
