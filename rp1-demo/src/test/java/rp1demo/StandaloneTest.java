@@ -37,4 +37,17 @@ class StandaloneTest {
                 + ": is it running? start one with rp1\n"), output);
         assertFalse(output.contains("\tat "), "no stack trace: " + output);
     }
+
+    /**
+     * Each demo run on its own reads the rossum.ini of its package (README, "Demos"), which shows on the
+     * console what the robot does: DemoZero had none and ran silent.
+     */
+    @Test
+    void everyDemosPackageHasItsRossumIni() {
+        for (Class<?> main : new Class<?>[] {rp1demo.clientzero.ClnMain.class, rp1demo.demozero.DemoMain.class,
+            rp1demo.firefighter.FfMain.class, rp1demo.linetracker.LtMain.class, rp1demo.autopilot.ApMain.class,
+            rp1demo.ackerman.Main.class, rp1demo.bumper.Bumper.class}) {
+            assertTrue(main.getResource("rossum.ini") != null, main.getName() + " has no rossum.ini beside it");
+        }
+    }
 }
