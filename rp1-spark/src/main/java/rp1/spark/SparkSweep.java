@@ -78,6 +78,10 @@ public final class SparkSweep {
         }
         // The user's own words, for the advice on going on after an interruption (not the --jobs added below).
         Sweep.Invocation how = new Sweep.Invocation(COMMAND, List.of(args));
+        if (master == null && !keep.isEmpty()) {
+            err.println("rp1.Sweep: --keep says which files to bring back from a cluster's executors: it needs --master");
+            return 1;
+        }
         if (master == null) {
             return Sweep.run(how, rest.toArray(new String[0]), out, err, terminal, interruption, null);
         }
