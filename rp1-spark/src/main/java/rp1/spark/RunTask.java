@@ -35,6 +35,8 @@ final class RunTask implements Serializable {
     private static final long serialVersionUID = 1L;
     /** Files up to this size come back whatever {@code --keep} says. */
     static final long SMALL_BYTES = 4L << 20;
+    /** The --keep name that brings back every file. */
+    static final String ALL = "all";
 
     /** The run's folder name, for the temporary folder's name. */
     private final String name;
@@ -102,7 +104,7 @@ final class RunTask implements Serializable {
                 }
                 String n = f.getFileName().toString();
                 long size = Files.size(f);
-                if (size <= SMALL_BYTES || keep.contains(n) || keep.contains("all")) {
+                if (size <= SMALL_BYTES || keep.contains(n) || keep.contains(ALL)) {
                     files.put(n, Files.readAllBytes(f));
                 } else {
                     leftOut.add(n + " (" + size + " bytes)");

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.jar.JarOutputStream;
 import java.util.zip.ZipEntry;
 import java.util.stream.Stream;
@@ -46,6 +47,8 @@ final class SparkRuns implements RunEngine {
     private final Map<String, String> planTexts;
     private final List<String> robotJars;
     private volatile boolean stopping;
+    /** The names of the files the runs left, brought back or not: for the names --keep gave that none left. */
+    private final Set<String> seen = ConcurrentHashMap.newKeySet();
 
     private SparkRuns(JavaSparkContext spark, double timeoutSeconds, Set<String> keep, LocalRun local,
                       Map<String, String> planTexts, List<String> robotJars) {
@@ -131,6 +134,8 @@ final class SparkRuns implements RunEngine {
         for (Map.Entry<String, byte[]> f : files.files.entrySet()) {
             Files.write(dir.resolve(f.getKey()), f.getValue());
         }
+        seen.addAll(files.files.keySet());
+        files.leftOut.forEach(l -> seen.add(l.substring(0, Math.max(0, l.lastIndexOf(" (")))));
         Files.write(dir.resolve(EXECUTOR), (files.host + "\n").getBytes(StandardCharsets.UTF_8));
         Path notKept = dir.resolve(NOT_KEPT);
         if (files.leftOut.isEmpty()) {
@@ -147,6 +152,19 @@ final class SparkRuns implements RunEngine {
             return new Ran(RunReport.failed("the run came back without results: " + e.getMessage(),
                     ExitStatus.STARTUP_FAILED), files.trails());
         }
+    }
+
+    /** Which names --keep gave that no run left a file of (a mistyped name brings nothing back), or null. */
+    @Override
+    public String note() {
+        List<String> missing = notLeft(keep, seen);
+        return missing.isEmpty() ? null : "--keep " + String.join(",", missing) + ": no run left a file of that name"
+                + " (a run leaves " + String.join(", ", seen.stream().sorted().toList()) + ")";
+    }
+
+    /** The names of {@code keep} (but "all") that are not among {@code left}, in order. */
+    static List<String> notLeft(Set<String> keep, Set<String> left) {
+        return keep.stream().filter(k -> !k.equals(RunTask.ALL) && !left.contains(k)).sorted().toList();
     }
 
     @Override
