@@ -175,7 +175,7 @@ final class BodyCodec {
         if (w instanceof RsAckermanSteering) {
             RsAckermanSteering a = (RsAckermanSteering) w;
             out.i32(ACKERMAN).f64(a.trackWidth).f64(a.wheelBase).f64(a.driveWheelRadius)
-                    .f64(a.maxAbsSteeringAngle).bool(a.dualSteering);
+                    .f64(Double.isNaN(a.decodedFrom) ? a.maxAbsSteeringAngle : a.decodedFrom).bool(a.dualSteering);
         } else {
             out.i32(DIFFERENTIAL).f64(w.trackWidth).f64(w.driveWheelRadius);
         }
@@ -309,8 +309,14 @@ final class BodyCodec {
         if (in.i32(f + ".systemType") == DIFFERENTIAL) {
             system = new RsDifferentialSteering(in.finite(f + ".trackWidth"), in.finite(f + ".driveWheelRadius"));
         } else {
-            system = new RsAckermanSteering(in.finite(f + ".trackWidth"), in.finite(f + ".wheelBase"),
-                    in.finite(f + ".driveWheelRadius"), in.finite(f + ".maxAbsSteeringAngle"), in.bool(f + ".dualSteering"));
+            double trackWidth = in.finite(f + ".trackWidth");
+            double wheelBase = in.finite(f + ".wheelBase");
+            double driveWheelRadius = in.finite(f + ".driveWheelRadius");
+            double limit = in.finite(f + ".maxAbsSteeringAngle");
+            RsAckermanSteering ackerman = new RsAckermanSteering(trackWidth, wheelBase, driveWheelRadius, limit,
+                    in.bool(f + ".dualSteering"));
+            ackerman.decodedFrom = limit;
+            system = ackerman;
         }
         int n = in.count(f + ".nWheels", WireLimits.MAX_WHEELS);
         for (int k = 0; k < n; k++) {

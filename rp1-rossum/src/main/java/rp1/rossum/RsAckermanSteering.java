@@ -32,6 +32,13 @@ public class RsAckermanSteering extends RsWheelSystem {
     protected double depictionSteeringAngle;
     /** Whether {@link #addDefaultWheels} has added the four drawn wheels. */
     protected boolean defaultWheelsAdded;
+    /**
+     * The steering limit this system was decoded from (NaN if it was built, not decoded). Decoding
+     * derives a smaller limit from the one on the wire, as RP1 0.60's simulator does; encoding a
+     * decoded system writes the wire's value back, so that a body written into a recording is, read
+     * again, the body the simulator had (encoding the derived limit shrank it once more at every replay).
+     */
+    double decodedFrom = Double.NaN;
 
     /**
      * @param trackWidth distance between left and right wheels, metres
