@@ -119,6 +119,13 @@ public final class RunningServer {
         if (!waitForClients) {
             parts.simulation.startClock();
         }
+        if (c.lockstep && !c.enableNetworkClients && parts.launcher.isEmpty()) {
+            // Nobody can ever come, so at max speed no robot is ever on the floor and time never passes:
+            // the run is deserted from the start, and would wait for ever.
+            parts.log.log("No client is loaded and network clients are disabled: at simulationSpeed=max simulated"
+                    + " time stands still without a robot, so nothing can happen; the run ends here");
+            requestStop(ExitStatus.OK, NOBODY_LEFT);
+        }
     }
 
     private void scheduleMaxTime() {

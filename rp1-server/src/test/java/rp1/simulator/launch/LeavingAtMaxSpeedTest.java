@@ -78,6 +78,21 @@ class LeavingAtMaxSpeedTest {
         }
     }
 
+    /** A max-speed run that no client can ever join ends at once: it used to stand at time 0 for ever. */
+    @Test
+    void aMaxSpeedRunThatNoClientCanJoinEndsAtOnce() throws Exception {
+        RunningServer server = TestServer.start(dir, "simulationSpeed=max", "interlockEnabled=true",
+                "enableNetworkClients=false", "dlcEnabled=false", "maxSimulationTime=1");
+        try {
+            assertEquals(OptionalInt.of(ExitStatus.OK), server.awaitExit(20, TimeUnit.SECONDS), "it ends by itself");
+            assertEquals(RunningServer.NOBODY_LEFT, server.getStopReason());
+            assertTrue(TestServer.log(dir).contains("No client is loaded and network clients are disabled"),
+                    TestServer.log(dir));
+        } finally {
+            server.stop();
+        }
+    }
+
     /** One run: the client acknowledges the beat at 2.0 s, waits {@code delay} ms, closes; the event log. */
     private static String runOnce(Path dir, int delay) throws Exception {
         Files.createDirectories(dir);
