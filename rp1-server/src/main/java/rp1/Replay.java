@@ -109,25 +109,36 @@ public final class Replay {
             if (o.snapshot != null) {
                 Renderer renderer = new Renderer(replayer.simulation().getWorld().getPlan());
                 WorldSnapshot snapshot = WorldSnapshot.of(replayer.simulation().getWorld(), outcome.time());
-                try {
-                    Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, paths.trails()), o.snapshot);
-                } catch (IOException e) {
-                    err.println("rp1.Replay: cannot write the picture " + o.snapshot + ": " + IoFailures.why(e));
+                if (!written("picture", o.snapshot, err,
+                        () -> Pictures.writePng(Pictures.renderCaptioned(renderer, snapshot, paths.trails()), o.snapshot))) {
                     return 1;
                 }
             }
-            if (trace != null) {
-                try {
-                    ReplayPage.write(trace, o.recording.getFileName().toString(), outcome.time(), o.html);
-                } catch (IOException e) {
-                    err.println("rp1.Replay: cannot write the page " + o.html + ": " + IoFailures.why(e));
-                    return 1;
-                }
+            if (trace != null && !written("page", o.html, err,
+                    () -> ReplayPage.write(trace, o.recording.getFileName().toString(), outcome.time(), o.html))) {
+                return 1;
             }
             return report(recording, outcome, o, out, err);
         } catch (RecordingException e) {
             err.println("rp1.Replay: " + e.getMessage());
             return 1;
+        }
+    }
+
+    /** Writes an output. */
+    @FunctionalInterface
+    private interface Output {
+        void write() throws IOException;
+    }
+
+    /** Writes {@code file}, the replay's {@code what}; false, with why told on {@code err}, if it could not be. */
+    private static boolean written(String what, Path file, PrintStream err, Output output) {
+        try {
+            output.write();
+            return true;
+        } catch (IOException e) {
+            err.println("rp1.Replay: cannot write the " + what + " " + file + ": " + IoFailures.why(e));
+            return false;
         }
     }
 

@@ -45,6 +45,15 @@ class BodyCodecTest {
         assertArrayEquals(expected, BodyCodec.encode(body));
     }
 
+    /** A car with Ackerman steering: 0.5 m track, 1 m wheel base, 45 degrees at the inner wheel. */
+    private static RsBody car() {
+        RsBody body = new RsBody("car");
+        RsAckermanSteering a = new RsAckermanSteering(0.5, 1.0, 0.1, Math.toRadians(45), false);
+        a.addDefaultWheels(0.1, 0.05, 0.1, 0.02);
+        body.addPart(a);
+        return body;
+    }
+
     private static RsBody roundTrip(RsBody body) throws Exception {
         return BodyCodec.decode(BodyCodec.encode(body));
     }
@@ -166,10 +175,8 @@ class BodyCodecTest {
 
     @Test
     void anAckermanSystemArrivesWithASmallerRederivedSteeringLimit() throws Exception {
-        RsBody body = new RsBody("car");
-        RsAckermanSteering a = new RsAckermanSteering(0.5, 1.0, 0.1, Math.toRadians(45), false);
-        a.addDefaultWheels(0.1, 0.05, 0.1, 0.02);
-        body.addPart(a);
+        RsBody body = car();
+        RsAckermanSteering a = (RsAckermanSteering) body.wheelSystem;
         RsAckermanSteering g = (RsAckermanSteering) roundTrip(body).wheelSystem;
         assertEquals(0.5, g.getTrackWidth());
         assertEquals(1.0, g.getWheelBase());
@@ -188,11 +195,7 @@ class BodyCodecTest {
      */
     @Test
     void aDecodedAckermanSystemEncodesBackToTheBytesItCameFrom() throws Exception {
-        RsBody body = new RsBody("car");
-        RsAckermanSteering a = new RsAckermanSteering(0.5, 1.0, 0.1, Math.toRadians(45), false);
-        a.addDefaultWheels(0.1, 0.05, 0.1, 0.02);
-        body.addPart(a);
-        byte[] sent = BodyCodec.encode(body);
+        byte[] sent = BodyCodec.encode(car());
         RsBody simulators = BodyCodec.decode(sent);
         assertArrayEquals(sent, BodyCodec.encode(simulators));
         RsAckermanSteering once = (RsAckermanSteering) simulators.wheelSystem;

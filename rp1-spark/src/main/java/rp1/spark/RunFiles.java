@@ -18,17 +18,17 @@ final class RunFiles implements Serializable {
 
     /** File name to content, in the order found. */
     final Map<String, byte[]> files;
-    /** "NAME (N bytes)" of each file not sent. */
-    final List<String> leftOut;
+    /** The size in bytes of each file not sent, by name, in the order found. */
+    final Map<String, Long> leftOut;
     /** The executor's host, for the run's folder (where a run went is worth knowing when one fails). */
     final String host;
     /** Each robot's name and its trail's pieces, as the run handed them over. */
     private final List<String> trailRobots = new ArrayList<>();
     private final List<ArrayList<double[]>> trailPieces = new ArrayList<>();
 
-    RunFiles(Map<String, byte[]> files, List<String> leftOut, String host, List<Trail> trails) {
+    RunFiles(Map<String, byte[]> files, Map<String, Long> leftOut, String host, List<Trail> trails) {
         this.files = new LinkedHashMap<>(files);
-        this.leftOut = List.copyOf(leftOut);
+        this.leftOut = new LinkedHashMap<>(leftOut);
         this.host = host;
         for (Trail t : trails) {
             trailRobots.add(t.robot());

@@ -96,7 +96,7 @@ final class RunTask implements Serializable {
 
     private RunFiles gather(Path dir, List<Trail> trails) throws IOException {
         Map<String, byte[]> files = new LinkedHashMap<>();
-        List<String> leftOut = new ArrayList<>();
+        Map<String, Long> leftOut = new LinkedHashMap<>();
         try (Stream<Path> list = Files.list(dir)) {
             for (Path f : (Iterable<Path>) list.sorted()::iterator) {
                 if (!Files.isRegularFile(f)) {
@@ -107,7 +107,7 @@ final class RunTask implements Serializable {
                 if (size <= SMALL_BYTES || keep.contains(n) || keep.contains(ALL)) {
                     files.put(n, Files.readAllBytes(f));
                 } else {
-                    leftOut.add(n + " (" + size + " bytes)");
+                    leftOut.put(n, size);
                 }
             }
         }

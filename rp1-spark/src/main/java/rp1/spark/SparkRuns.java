@@ -135,7 +135,7 @@ final class SparkRuns implements RunEngine {
             Files.write(dir.resolve(f.getKey()), f.getValue());
         }
         seen.addAll(files.files.keySet());
-        files.leftOut.forEach(l -> seen.add(l.substring(0, Math.max(0, l.lastIndexOf(" (")))));
+        seen.addAll(files.leftOut.keySet());
         Files.write(dir.resolve(EXECUTOR), (files.host + "\n").getBytes(StandardCharsets.UTF_8));
         Path notKept = dir.resolve(NOT_KEPT);
         if (files.leftOut.isEmpty()) {
@@ -143,7 +143,7 @@ final class SparkRuns implements RunEngine {
         } else {
             try (OutputStream out = Files.newOutputStream(notKept)) {
                 out.write(("# Larger than " + (RunTask.SMALL_BYTES >> 20) + " MB, left on the executor (--keep NAME"
-                        + " brings them back):\n" + String.join("\n", files.leftOut) + "\n").getBytes(StandardCharsets.UTF_8));
+                        + " brings them back):\n" + leftOutLines(files.leftOut)).getBytes(StandardCharsets.UTF_8));
             }
         }
         try {
@@ -152,6 +152,13 @@ final class SparkRuns implements RunEngine {
             return new Ran(RunReport.failed("the run came back without results: " + e.getMessage(),
                     ExitStatus.STARTUP_FAILED), files.trails());
         }
+    }
+
+    /** A line per file left on the executor: "NAME (N bytes)". */
+    private static String leftOutLines(Map<String, Long> leftOut) {
+        StringBuilder lines = new StringBuilder();
+        leftOut.forEach((name, size) -> lines.append(name).append(" (").append(size).append(" bytes)\n"));
+        return lines.toString();
     }
 
     /** Which names --keep gave that no run left a file of (a mistyped name brings nothing back), or null. */

@@ -9,8 +9,9 @@ import rp1.simulator.ReportedResults;
 /**
  * The run as the server hands it to a client it loads: the properties' {@code param.NAME} values (the
  * names asked for are noted, for a sweep to check), the simulation's seed, and its results, recorded
- * under the client's session number so that they end up on its robot's row. A client that connects itself over TCP ({@code dlcSetIO=false}) has no session
- * yet when it is loaded: it gets the parameters and the seed, and its results are not kept.
+ * under the client's session number so that they end up on its robot's row. A client that connects
+ * itself over TCP ({@code dlcSetIO=false}) has no session yet when it is loaded: it gets the
+ * parameters and the seed, and its results are not kept.
  */
 final class LoadedRunContext implements RsRunContext {
     /** The session number of a client whose results are not kept. */

@@ -120,11 +120,9 @@ public final class RunningServer {
             parts.simulation.startClock();
         }
         if (c.lockstep && !c.enableNetworkClients && parts.launcher.isEmpty()) {
-            // Nobody can ever come, so at max speed no robot is ever on the floor and time never passes:
-            // the run is deserted from the start, and would wait for ever.
-            parts.log.log("No client is loaded and network clients are disabled: at simulationSpeed=max simulated"
+            // Nobody can ever come: the run is deserted from its start, and would wait for ever.
+            endDeserted("No client is loaded and network clients are disabled: at simulationSpeed=max simulated"
                     + " time stands still without a robot, so nothing can happen; the run ends here");
-            requestStop(ExitStatus.OK, NOBODY_LEFT);
         }
     }
 
@@ -153,12 +151,15 @@ public final class RunningServer {
         }
         String why = timeLimit ? "maxSimulationTime (" + c.maxSimulationTime + " s) can never be reached"
                 : "network clients are disabled, so nothing more can happen";
-        parts.simulation.whenDeserted(() -> {
-            parts.simulation.shutdown();
-            parts.log.log("No robot is left and no client is connected: at simulationSpeed=max simulated time stands "
-                    + "still and " + why + "; the run ends here");
-            requestStop(ExitStatus.OK, NOBODY_LEFT);
-        });
+        parts.simulation.whenDeserted(() -> endDeserted("No robot is left and no client is connected: at"
+                + " simulationSpeed=max simulated time stands still and " + why + "; the run ends here"));
+    }
+
+    /** Ends a max-speed run that no robot is in and none can come to, saying {@code why} in the log. */
+    private void endDeserted(String why) {
+        parts.simulation.shutdown();
+        parts.log.log(why);
+        requestStop(ExitStatus.OK, NOBODY_LEFT);
     }
 
     /** How loaded clients end the server. */
