@@ -8,6 +8,8 @@ import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
 
 import rp1.io.IoFailures;
 import rp1.simulator.batch.Batch;
@@ -162,11 +164,17 @@ public final class Sweep {
             Batch.Result result = batch.run(new Progress(toRun, out, terminal));
             List<Batch.Outcome> outcomes = result.outcomes();
             Path summary = batch.out().resolve("summary.png");
-            List<SummaryCsv.Row> rows = SummaryCsv.write(batch.out().resolve("results.csv"),
-                    batch.out().resolve("summary.csv"), batch.variedKeys());
+            // The picture is most of a sweep's last tenth of a second, on one processor: it is drawn on a
+            // thread of its own while the tables are written here.
+            FutureTask<Void> picture = new FutureTask<>(() -> {
+                SweepSummary.write(summary, batch.variedKeys(), batch.plans(), outcomes);
+                return null;
+            });
+            new Thread(picture, "rp1-summary-picture").start();
+            SummaryCsv.write(batch.out().resolve("results.csv"), batch.out().resolve("summary.csv"), batch.variedKeys());
             ResultsNotes.write(batch.out(), batch.variedKeys(), ResultsCsv.resultNames(outcomes));
-            SweepSummary.write(summary, rows, batch.variedKeys(), batch.plans(), outcomes);
-            index(batch.out(), pages, err);
+            index(batch.out(), pages, true, err);
+            awaitPicture(picture, () -> index(batch.out(), pages, false, err));
             long failed = outcomes.stream().filter(o -> !o.report().succeeded()).count();
             if (result.interrupted()) {
                 int missing = batch.runs().size() - outcomes.size();
@@ -227,10 +235,29 @@ public final class Sweep {
         return unread;
     }
 
-    /** Writes the sweep's index.html (with each run's replay page if asked); a failure is told, not fatal. */
-    private static void index(Path dir, boolean pages, PrintStream err) {
+    /** Waits for the summary picture; if it could not be written, does {@code instead} and throws why. */
+    private static void awaitPicture(FutureTask<Void> picture, Runnable instead) throws IOException, InterruptedException {
         try {
-            for (String failure : SweepIndex.write(dir, pages)) {
+            picture.get();
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof IOException io) {
+                instead.run();
+                throw io;
+            }
+            if (e.getCause() instanceof Error error) {
+                throw error;
+            }
+            throw (RuntimeException) e.getCause();
+        }
+    }
+
+    /**
+     * Writes the sweep's index.html (with each run's replay page if asked, and showing summary.png if
+     * {@code picture}); a failure is told, not fatal.
+     */
+    private static void index(Path dir, boolean pages, boolean picture, PrintStream err) {
+        try {
+            for (String failure : SweepIndex.write(dir, pages, picture)) {
                 err.println("rp1.Sweep: no replay page for " + failure);
             }
         } catch (IOException e) {

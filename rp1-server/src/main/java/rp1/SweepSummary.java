@@ -4,14 +4,15 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import rp1.rossum.RsPlan;
 import rp1.simulator.batch.Batch;
 import rp1.simulator.batch.ResultsCsv;
 import rp1.simulator.batch.RobotResult;
-import rp1.simulator.batch.SummaryCsv;
 import rp1.simulator.batch.Trail;
 import rp1.view.BoxPlot;
 import rp1.view.SweepPicture;
@@ -40,21 +41,16 @@ final class SweepSummary {
     /**
      * Writes the picture.
      *
-     * @param rows     the summary's rows, one per configuration
-     * @param outcomes the runs, for their trails
+     * @param outcomes the runs, in the sweep's order: their configurations are numbered in the order
+     *                 summary.csv has them (first seen), robots without a name left out
      */
-    static void write(Path file, List<SummaryCsv.Row> rows, List<String> varied, Map<String, RsPlan> plans,
-                             List<Batch.Outcome> outcomes) throws IOException {
-        List<SummaryCsv.Row> drawn = new ArrayList<>();
-        for (SummaryCsv.Row r : rows) {
-            if (!r.configuration().get("robot").isEmpty()) {
-                drawn.add(r);
-            }
-        }
+    static void write(Path file, List<String> varied, Map<String, RsPlan> plans, List<Batch.Outcome> outcomes)
+            throws IOException {
+        List<Map<String, String>> drawn = configurations(outcomes, varied);
         List<SweepPicture.Key> keys = new ArrayList<>();
         List<SweepPicture.Panel> panels = new ArrayList<>();
         for (int i = 0; i < drawn.size(); i++) {
-            Map<String, String> c = drawn.get(i).configuration();
+            Map<String, String> c = drawn.get(i);
             String label = (i + 1) + ": " + String.join(", ", describe(c, varied));
             keys.add(new SweepPicture.Key(SweepPicture.colour(i), label));
             panels.add(new SweepPicture.Panel(label, SweepPicture.colour(i), plans.get(c.get("plan")),
@@ -68,11 +64,28 @@ final class SweepSummary {
             List<BoxPlot.Box> boxes = new ArrayList<>();
             for (int i = 0; i < drawn.size(); i++) {
                 boxes.add(new BoxPlot.Box(Integer.toString(i + 1), SweepPicture.colour(i),
-                        values(outcomes, drawn.get(i).configuration(), varied, name)));
+                        values(outcomes, drawn.get(i), varied, name)));
             }
             metrics.add(new BoxPlot.Metric(METRICS.getOrDefault(name, name), boxes));
         }
         SweepPicture.write(file, metrics, panels, keys);
+    }
+
+    /** The configurations of the runs' robots as summary.csv names them (varied keys, plan, robot), first seen first. */
+    private static List<Map<String, String>> configurations(List<Batch.Outcome> outcomes, List<String> varied) {
+        Set<Map<String, String>> seen = new LinkedHashSet<>();
+        for (Batch.Outcome o : outcomes) {
+            for (RobotResult r : o.report().robots()) {
+                if (!r.name().isEmpty()) {
+                    Map<String, String> c = new LinkedHashMap<>();
+                    varied.forEach(k -> c.put(k, o.run().configuration().get(k)));
+                    c.put("plan", o.run().plan());
+                    c.put("robot", r.name());
+                    seen.add(c);
+                }
+            }
+        }
+        return new ArrayList<>(seen);
     }
 
     private static List<String> describe(Map<String, String> c, List<String> varied) {

@@ -38,6 +38,14 @@ public final class SweepIndex {
      * @return the runs whose page could not be written, with why (empty when all were)
      */
     public static List<String> write(Path out, boolean pages) throws IOException {
+        return write(out, pages, Files.exists(out.resolve("summary.png")));
+    }
+
+    /**
+     * {@link #write(Path, boolean)}, showing {@code summary.png} if {@code picture}: a sweep writes its
+     * index while the picture is still being put together.
+     */
+    public static List<String> write(Path out, boolean pages, boolean picture) throws IOException {
         CsvTable results = CsvTable.read(out.resolve("results.csv"));
         Path summaryFile = out.resolve("summary.csv");
         CsvTable summary = Files.exists(summaryFile) ? CsvTable.read(summaryFile) : perPlan(results);
@@ -56,7 +64,7 @@ public final class SweepIndex {
                     .key("page").value(folder != null && Files.exists(out.resolve(folder).resolve(PAGE))).endObject();
         }
         String data = new Json().beginObject().key("summary").raw(table(summary)).key("header").raw(strings(results.header()))
-                .key("runs").raw(runs.endArray().toString()).key("picture").value(Files.exists(out.resolve("summary.png"))).key("out").value(out.toAbsolutePath().toString())
+                .key("runs").raw(runs.endArray().toString()).key("picture").value(picture).key("out").value(out.toAbsolutePath().toString())
                 .endObject().toString();
         String html = template().replace("/*RP1-DATA*/", data);
         Path index = out.resolve(NAME);

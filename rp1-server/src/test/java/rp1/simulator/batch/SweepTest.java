@@ -83,6 +83,21 @@ class SweepTest {
     }
 
     @Test
+    void aSummaryPictureThatCannotBeWrittenFailsTheSweepAndTheIndexShowsNone() throws Exception {
+        // The picture is drawn while the tables and index.html are written: the index, written first,
+        // must not keep showing a picture that then failed.
+        Path p = properties("exitWhenClientsDone=true", "maxSimulationTime=30");
+        Files.createDirectories(dir.resolve("out/summary.png/in-the-way"));
+        int status = sweep("-p", p.toString(), "--seeds", "1-2", "--out", dir.resolve("out").toString());
+        assertEquals(1, status, sweeps.out() + sweeps.err());
+        assertTrue(sweeps.err().startsWith("rp1.Sweep: " + dir.resolve("out/summary.png")), sweeps.err());
+        assertEquals(3, Files.readAllLines(dir.resolve("out/results.csv")).size());
+        assertTrue(Files.exists(dir.resolve("out/summary.csv")));
+        String index = Files.readString(dir.resolve("out/index.html"));
+        assertTrue(index.contains("\"picture\":0,"), index);
+    }
+
+    @Test
     void aRunThatOutlivesItsTimeoutIsStoppedAndIsARowWithItsReason() throws Exception {
         Path p = properties("exitWhenClientsDone=true", "dlcName=" + SleepyDlc.class.getName());
         int status = sweep("-p", p.toString(), "--seeds", "2", "--timeout", "2", "--out", dir.resolve("out").toString());
