@@ -76,7 +76,8 @@ public final class Simulation {
         this.scheduler = new Scheduler(settings.newClock());
         this.inputs = new InputQueue(scheduler);
         this.interlock = settings.interlock ? new Interlock(scheduler) : null;
-        this.world = new World(plan, scheduler, settings.modelingInterval, new Random(settings.randomSeed),
+        // Mixed: java.util.Random's first draws from consecutive seeds are nearly the same.
+        this.world = new World(plan, scheduler, settings.modelingInterval, new Random(SplitMix.mix(settings.randomSeed)),
                 settings.robotsInteract);
         this.heartbeats = new Heartbeats(scheduler);
         this.host = new SessionHost();

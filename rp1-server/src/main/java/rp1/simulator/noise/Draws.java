@@ -2,6 +2,8 @@ package rp1.simulator.noise;
 
 import java.util.SplittableRandom;
 
+import rp1.simulator.SplitMix;
+
 /**
  * One stream of random draws for one quantity of one robot. Its seed is derived from the run's seed,
  * the robot's number and the quantity alone, so its draws depend on nothing but the order of the
@@ -21,15 +23,9 @@ final class Draws {
     /** The seed of one stream: the run seed, robot number and quantity mixed (SplitMix64's finaliser). */
     static long seed(long runSeed, int robot, Quantity quantity) {
         long s = runSeed;
-        s = mix(s + 0x9E3779B97F4A7C15L * (robot + 1L));
-        s = mix(s + 0xC2B2AE3D27D4EB4FL * (quantity.ordinal() + 1L));
+        s = SplitMix.mix(s + 0x9E3779B97F4A7C15L * (robot + 1L));
+        s = SplitMix.mix(s + 0xC2B2AE3D27D4EB4FL * (quantity.ordinal() + 1L));
         return s;
-    }
-
-    private static long mix(long z) {
-        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
-        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
-        return z ^ (z >>> 31);
     }
 
     /** A uniform draw in [0, 1). */
