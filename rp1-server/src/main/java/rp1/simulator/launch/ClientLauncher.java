@@ -208,7 +208,8 @@ final class ClientLauncher implements LoadedClient.Listener {
         }
     }
 
-    private String firstFailure() {
+    /** The failure of the first loaded client (in {@code dlcName} order) that failed so far, or null. */
+    String firstFailure() {
         for (LoadedClient c : clients) {
             if (c.failure() != null) {
                 return c.failure();

@@ -254,8 +254,16 @@ public final class RunningServer {
     /** Closes everything, in the order that lets clients see an orderly end and the log record it. */
     private void shutDown(int status) {
         stopping.set(true);
-        exitStatus = status;
         ServerLog log = parts.log;
+        String clientFailure = parts.launcher.firstFailure();
+        if (status == ExitStatus.OK && clientFailure != null) {
+            // A client that failed did not stop the others, but the run did not go as asked: its
+            // status says so whatever ended it (maxSimulationTime, the last robot leaving).
+            log.important("The run ended (" + stopReason + ") after a loaded client failed");
+            status = ExitStatus.CLIENT_FAILED;
+            stopReason = "client failed: " + clientFailure;
+        }
+        exitStatus = status;
         log.important("Shutting down simulator" + (status == ExitStatus.OK ? "" : " (exit status " + status + ")"));
         if (parts.listener != null) {
             parts.listener.close();

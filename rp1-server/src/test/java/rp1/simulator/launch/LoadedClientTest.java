@@ -96,6 +96,24 @@ class LoadedClientTest {
     }
 
     @Test
+    void aClientThatFailsDuringTheRunMakesTheStatusNonZeroWhateverEndsTheRun() throws Exception {
+        // The other robot goes on to maxSimulationTime: the failure did not stop it, but the run did
+        // not go as asked.
+        RunningServer server = TestServer.start(dir, "dlcEnabled=true", "dlcName=" + ErrorDlc.class.getName() + ","
+                + TirelessDlc.class.getName(), LOCKSTEP, "interlockEnabled=true", "maxSimulationTime=2");
+        assertEquals(OptionalInt.of(ExitStatus.CLIENT_FAILED), server.awaitExit(20, TimeUnit.SECONDS), TestServer.log(dir));
+        assertEquals("client failed: client " + ErrorDlc.class.getName() + ": run() failed: java.lang.AssertionError:"
+                + " the robot's own check failed", server.getStopReason().replaceFirst(" at .*", ""));
+        String log = TestServer.log(dir);
+        assertTrue(log.contains("maxSimulationTime 2.0 s reached"), log);
+        assertTrue(log.contains("The run ended (max-simulation-time) after a loaded client failed"), log);
+        // Alone, the failed robot leaves the floor deserted, which ends the run: with status 2 too.
+        TestDlc.reset();
+        assertEquals(ExitStatus.CLIENT_FAILED, runToTheEnd("dlcEnabled=true", "dlcName=" + ErrorDlc.class.getName(),
+                LOCKSTEP, "interlockEnabled=true", "enableNetworkClients=false", "maxSimulationTime=30"));
+    }
+
+    @Test
     void aMissingClassOrOneThatIsNotAClientIsAClientFailure() {
         StartupException missing = assertThrows(StartupException.class,
                 () -> TestServer.start(dir, "dlcEnabled=true", "dlcName=no.such.Robot"));

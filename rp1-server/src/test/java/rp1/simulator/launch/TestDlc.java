@@ -14,8 +14,8 @@ import rp1.rossum.RsLogInterface;
 
 /**
  * A dynamically loaded client for tests: records the calls the server makes on it, says hello in the
- * log, places its robot at p1, asks for a heartbeat every 0.1 s and, after the fifth beat, ends its
- * session, so that its {@code run()} returns.
+ * log, places its robot at p1 (unless told otherwise), asks for a heartbeat every 0.1 s and, after
+ * the fifth beat, ends its session, so that its {@code run()} returns.
  */
 public class TestDlc extends RsClient {
     /** Calls on every instance, in order. */
@@ -32,6 +32,11 @@ public class TestDlc extends RsClient {
     static void reset() {
         CALLS.clear();
         BEATS.clear();
+    }
+
+    /** Where the robot asks to be placed. */
+    protected String placement() {
+        return "p1";
     }
 
     /** Heartbeats after which the client leaves; 0 for never. */
@@ -74,7 +79,7 @@ public class TestDlc extends RsClient {
                 shutdown();
             }
         });
-        sendPlacementRequest("p1");
+        sendPlacementRequest(placement());
         sendHeartbeatRequest(0.1);
     }
 
