@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 
 import rp1.rossum.RsRunContext;
 import rp1.simulator.launch.RunningServer;
@@ -34,6 +35,7 @@ final class ExternalClient {
     private final Process process;
     private final Path results;
     private final Path output;
+    private boolean endedBeforeTheRun;
 
     private ExternalClient(Process process, Path results, Path output) {
         this.process = process;
@@ -61,6 +63,26 @@ final class ExternalClient {
     /** Whether the program has ended. */
     boolean hasExited() {
         return !process.isAlive();
+    }
+
+    /** Waits at most {@code seconds} for the program to end by itself. */
+    void awaitExit(long seconds) throws InterruptedException {
+        process.waitFor(seconds, TimeUnit.SECONDS);
+    }
+
+    /** The program's exit status, once it has ended. */
+    int exitValue() {
+        return process.exitValue();
+    }
+
+    /** The run saw the program ended while the server was still running. */
+    void seenEndedBeforeTheRun() {
+        endedBeforeTheRun = true;
+    }
+
+    /** Whether the program was seen ended while the server was still running. */
+    boolean endedBeforeTheRun() {
+        return endedBeforeTheRun;
     }
 
     /** How the program ended, with the last line it printed, for a run's reason. */

@@ -132,10 +132,16 @@ public final class SweepRun {
                 return report(RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of"
                         + " wall time", timeoutSeconds), RunReport.TIMED_OUT));
             }
+            int exit = status.getAsInt();
+            String reason = server.getStopReason();
+            if (exit == ExitStatus.OK && external != null && failedFirst(external, reason)) {
+                exit = ExitStatus.CLIENT_FAILED;
+                reason = "client failed: " + external.describeExit();
+            }
             List<RobotResult> results = external == null ? robots : withResults(robots, external.finish());
             // Which parameters a --client program reads is not known here.
             List<String> asked = external == null ? server.getSimulation().getAskedParameters().names() : null;
-            return report(new RunReport(endTime, server.getStopReason(), status.getAsInt(), results, asked));
+            return report(new RunReport(endTime, reason, exit, results, asked));
         } catch (IOException e) {
             server.stop();
             return report(RunReport.failed("the client could not be started: " + e.getMessage(), ExitStatus.STARTUP_FAILED));
@@ -161,6 +167,7 @@ public final class SweepRun {
                 return status;
             }
             if (external != null && external.hasExited()) {
+                external.seenEndedBeforeTheRun();
                 clientGone = Math.min(clientGone, System.nanoTime());
                 if (System.nanoTime() - clientGone > TimeUnit.SECONDS.toNanos(ExternalClient.GRACE_SECONDS)) {
                     return OptionalInt.empty();
@@ -168,6 +175,20 @@ public final class SweepRun {
             }
         }
         return OptionalInt.empty();
+    }
+
+    /**
+     * Whether the run's program failed while the run went on: it ended by itself with a status other
+     * than 0, seen while the server ran or ending the run by leaving it deserted. (A program that ends
+     * with an error once the server has closed its connection at the run's end has not failed the run.)
+     */
+    private static boolean failedFirst(ExternalClient external, String reason) throws InterruptedException {
+        if (reason.equals(RunningServer.NOBODY_LEFT)) {
+            // Its robot left: the program is ending, and how it ends tells whether that was asked.
+            external.awaitExit(ExternalClient.GRACE_SECONDS);
+        }
+        return external.hasExited() && external.exitValue() != 0
+                && (external.endedBeforeTheRun() || reason.equals(RunningServer.NOBODY_LEFT));
     }
 
     /** The {@code --client} command the run's folder holds, or null. */

@@ -26,6 +26,11 @@ public class ExperimentDlc extends RsClient {
         ExperimentDlc robot = new ExperimentDlc();
         robot.initialize(p);
         robot.run();
+        // A program that fails after its robot has left (RP1_PARAM_exit: its exit status).
+        String exit = System.getenv("RP1_PARAM_exit");
+        if (exit != null) {
+            System.exit(Integer.parseInt(exit));
+        }
     }
 
     @Override

@@ -186,6 +186,26 @@ class ExperimentTest {
     }
 
     @Test
+    void aClientProgramThatEndsWithAnErrorFailsItsRun() throws Exception {
+        // Its robot leaves the floor, which ends the run (nobody-left), and then the program fails: an
+        // exit status the run must not read as success.
+        Path p = properties();
+        String java = Path.of(System.getProperty("java.home"), "bin", "java") + " -cp "
+                + System.getProperty("java.class.path") + " " + ExperimentDlc.class.getName();
+        assertEquals(Sweep.RUN_FAILED, sweep("-p", p.toString(), "--seeds", "8", "--vary", "param.exit=0,3", "--client",
+                java, "--out", dir.resolve("out").toString()), sweeps.err());
+        List<String> header = table("out", "results.csv").get(0);
+        List<String> ok = table("out", "results.csv").get(1);
+        List<String> failed = table("out", "results.csv").get(2);
+        assertEquals(List.of("0", "0", "nobody-left"), List.of(ok.get(header.indexOf("param.exit")),
+                ok.get(header.indexOf("status")), ok.get(header.indexOf("reason"))));
+        assertEquals(List.of("3", "2"), List.of(failed.get(header.indexOf("param.exit")), failed.get(header.indexOf("status"))));
+        assertTrue(failed.get(header.indexOf("reason")).startsWith("client failed: the program ended with status 3"),
+                failed.toString());
+        assertEquals("0.4", failed.get(header.indexOf("distance")), "the robot's row is still there");
+    }
+
+    @Test
     void aClientProgramThatEndsWithoutARobotFailsItsRunInsteadOfHangingIt() throws Exception {
         Path p = properties();
         assertEquals(Sweep.RUN_FAILED, sweep("-p", p.toString(), "--seeds", "1", "--client", "false", "--out",
