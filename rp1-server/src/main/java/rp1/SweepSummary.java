@@ -133,6 +133,9 @@ final class SweepSummary {
                                    String metric) {
         List<Double> values = new ArrayList<>();
         for (Batch.Outcome o : outcomes) {
+            if (!o.report().succeeded()) {
+                continue; // as in summary.csv: a failed run's numbers are of a run that did not go as asked
+            }
             for (RobotResult r : o.report().robots()) {
                 if (in(o, r.name(), c, varied)) {
                     double v = value(r, metric);

@@ -153,7 +153,7 @@ public final class ResultsCsv implements AutoCloseable {
             row.add(Long.toString(robot.events()));
             for (String n : resultNames) {
                 Double v = robot.results().get(n);
-                row.add(v == null ? "" : Numbers.format(v, Numbers.FREE));
+                row.add(v == null ? "" : Numbers.asReported(v));
             }
             row.addAll(end);
             rows.add(row);

@@ -50,8 +50,9 @@ public final class ResultsNotes {
     public static void write(Path dir, List<String> varied, Collection<String> results) throws IOException {
         StringBuilder b = new StringBuilder("# What the columns mean\n\n");
         b.append("Numbers are rounded to what the model resolves: metres, radians and simulated seconds to 4"
-                + " places (0.1 mm, 0.1 mrad, 0.1 ms), wall seconds to 3, the robots' own results and the"
-                + " statistics to 6; trailing zeros are dropped. An empty field is \"none\".\n\n");
+                + " places (0.1 mm, 0.1 mrad, 0.1 ms), wall seconds to 3, the statistics to 6 (or to 6"
+                + " significant digits if that is more); the robots' own results are as reported; trailing"
+                + " zeros are dropped. An empty field is \"none\".\n\n");
         b.append("## results.csv: a row per run and robot\n\n| Column | Unit | Meaning |\n|---|---|---|\n");
         varied.forEach(k -> row(b, k, "as given", "the value of " + k + " in this run (--vary)"));
         for (String c : ResultsCsv.RUN_COLUMNS) {
@@ -65,9 +66,12 @@ public final class ResultsNotes {
         b.append("\n## summary.csv: a row per configuration\n\n")
                 .append("A configuration is a combination of the varied keys' values, a plan and a robot. `runs` is")
                 .append(" how many rows it has, `failed` how many of them have a status other than 0. Each numeric")
-                .append(" column M of results.csv gets `M_n` (how many rows have a value), `M_mean`, `M_sd` (sample")
-                .append(" standard deviation), `M_ci95` (the mean's 95 % confidence interval is M_mean ± M_ci95,")
-                .append(" by Student's t with M_n - 1 degrees of freedom), `M_min` and `M_max`, in M's unit.\n");
+                .append(" column M of results.csv but the headings gets, over the rows of status 0, `M_n` (how")
+                .append(" many of them have a value: the mean of first_collision_time is that of the runs that")
+                .append(" collided), `M_mean`, `M_sd` (sample standard deviation), `M_ci95` (the mean's 95 %")
+                .append(" confidence interval is M_mean ± M_ci95, by Student's t with M_n - 1 degrees of")
+                .append(" freedom), `M_min` and `M_max`, in M's unit. The headings are angles, whose plain mean")
+                .append(" means nothing, and are left out.\n");
         Files.write(dir.resolve(FILE), b.toString().getBytes(StandardCharsets.UTF_8));
     }
 

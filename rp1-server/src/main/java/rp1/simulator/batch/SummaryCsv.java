@@ -14,15 +14,20 @@ import rp1.io.WholeFiles;
 /**
  * A sweep's {@code summary.csv}: one row per configuration (the varied keys' values, the plan and the
  * robot) with how many runs it had and how many failed, and, for every numeric column of
- * {@code results.csv}, the {@link Statistics} of its values as written there (empty fields, such as
- * the first collision time of a robot that never collided, are left out: {@code _n} says how many
- * counted).
+ * {@code results.csv} but the headings, the {@link Statistics} of its values as written there in the
+ * runs that ended as asked (status 0; empty fields, such as the first collision time of a robot that
+ * never collided, are left out: {@code _n} says how many counted).
  */
 public final class SummaryCsv {
     /** What each metric column gets, in order: {@code METRIC_n}, {@code METRIC_mean}, ... */
     public static final List<String> STATISTICS = List.of("n", "mean", "sd", "ci95", "min", "max");
-    /** The columns of results.csv that are not summed up: the run's identity and its outcome in words. */
-    private static final List<String> NOT_METRICS = List.of("seed", "plan", "run", "robot", "status", "reason");
+    /**
+     * The columns of results.csv that are not summed up: the run's identity, its outcome in words, and
+     * the headings, angles whose mean and spread as plain numbers mean nothing (the mean of 3.1 and
+     * -3.1 rad is 0, the opposite way).
+     */
+    private static final List<String> NOT_METRICS = List.of("seed", "plan", "run", "robot", "status", "reason",
+            "start_heading", "end_heading");
 
     /** One configuration's row. */
     public record Row(Map<String, String> configuration, int runs, int failed, Map<String, Statistics> metrics) {
@@ -63,13 +68,16 @@ public final class SummaryCsv {
         List<Row> out = new ArrayList<>();
         int status = header.indexOf("status");
         byConfiguration.forEach((key, members) -> {
+            // A failed run's numbers are of a run that did not go as asked (a robot that crashed at 7 s
+            // ended its minute early): they are counted in `failed`, not in the statistics.
+            List<List<String>> succeeded = members.stream().filter(r -> "0".equals(r.get(status))).toList();
             Map<String, Statistics> stats = new LinkedHashMap<>();
             for (String m : metrics) {
                 int at = header.indexOf(m);
-                stats.put(m, Statistics.of(members.stream().mapToDouble(r -> Numbers.parse(r.get(at)))
+                stats.put(m, Statistics.of(succeeded.stream().mapToDouble(r -> Numbers.parse(r.get(at)))
                         .filter(v -> !Double.isNaN(v)).toArray()));
             }
-            int failed = (int) members.stream().filter(r -> !"0".equals(r.get(status))).count();
+            int failed = members.size() - succeeded.size();
             out.add(new Row(key, members.size(), failed, stats));
         });
         return out;
@@ -93,7 +101,7 @@ public final class SummaryCsv {
                 Statistics s = r.metrics().get(m);
                 line.add(Integer.toString(s.n()));
                 for (double v : new double[] {s.mean(), s.sd(), s.ci95(), s.min(), s.max()}) {
-                    line.add(Numbers.format(v, Numbers.FREE));
+                    line.add(Numbers.statistic(v));
                 }
             }
             table.add(line);
