@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -26,6 +27,7 @@ import java.util.regex.Pattern;
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsPlan;
+import rp1.rossum.RsRunContext;
 import rp1.simulator.config.ConfigException;
 import rp1.simulator.config.ResourceLocator;
 import rp1.simulator.config.ServerConfig;
@@ -177,9 +179,16 @@ public final class Batch {
         }
     }
 
-    /** The keys a {@code --client} sets: its program is the robot, over the network. */
-    private static final Map<String, String> CLIENT_KEYS = Map.of("enableNetworkClients", "true",
-            "dlcEnabled", "false", "exitWhenClientsDone", "false");
+    /** The keys a {@code --client} sets: its program is the robot, over the network (in this order in run.ini). */
+    private static final Map<String, String> CLIENT_KEYS = clientKeys();
+
+    private static Map<String, String> clientKeys() {
+        Map<String, String> keys = new LinkedHashMap<>();
+        keys.put("enableNetworkClients", "true");
+        keys.put("dlcEnabled", "false");
+        keys.put("exitWhenClientsDone", "false");
+        return Collections.unmodifiableMap(keys);
+    }
 
     private static String describe(Map<String, String> configuration) {
         StringBuilder b = new StringBuilder();
@@ -190,6 +199,16 @@ public final class Batch {
     /** A run must load its robot (or be given one with --client), and must end by itself. */
     private static void checkRunnable(ServerConfig config, String location, boolean client) throws SweepException {
         if (client) {
+            // The program reads its parameters from variables named after them, letters, digits and _ only.
+            Map<String, String> byVariable = new HashMap<>();
+            for (String name : config.parameters.keySet()) {
+                String variable = RsRunContext.parameterVariable(name);
+                String other = byVariable.put(variable, name);
+                if (other != null) {
+                    throw new SweepException(location + ": param." + other + " and param." + name + " would both reach"
+                            + " the --client program as " + variable + ": rename one");
+                }
+            }
             return;
         }
         if (!config.dlcEnabled) {
@@ -448,25 +467,28 @@ public final class Batch {
      */
     private String properties(Run run) {
         Path d = run.dir().toAbsolutePath();
-        StringBuilder own = new StringBuilder();
-        run.configuration().forEach((k, v) -> own.append(k).append('=').append(v).append('\n'));
+        // Escaped as a properties file escapes them: a varied value a\b, or a plan's Windows path, is
+        // read back as written.
+        Map<String, String> own = new LinkedHashMap<>(run.configuration());
         if (options.client != null) {
-            CLIENT_KEYS.forEach((k, v) -> own.append(k).append('=').append(v).append('\n'));
+            own.putAll(CLIENT_KEYS);
         }
+        own.put("randomSeed", Long.toString(run.seed()));
+        own.put("floorPlanFileName", run.plan());
+        own.put("enableGUI", "false");
+        // Runs go side by side: a live view on one port would let only the first of them start.
+        own.put("viewPort", "0");
+        own.put("logToFile", "true");
+        own.put("logFileName", d.resolve(SweepRun.LOG).toString());
+        own.put("logToSystemOut", "false");
+        own.put("recordFileName", d.resolve(RECORDING).toString());
+        own.put("eventLogFileName", d.resolve(EVENTS).toString());
+        if (options.pictures) {
+            own.put("snapshotFileName", d.resolve(PICTURE).toString());
+        }
+        own.put("snapshotInterval", "0");
         return runPropertiesText + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + describe(run.configuration())
-                + "\n" + own
-                + "randomSeed=" + run.seed() + "\n"
-                + "floorPlanFileName=" + run.plan() + "\n"
-                + "enableGUI=false\n"
-                // Runs go side by side: a live view on one port would let only the first of them start.
-                + "viewPort=0\n"
-                + "logToFile=true\n"
-                + "logFileName=" + d.resolve(SweepRun.LOG) + "\n"
-                + "logToSystemOut=false\n"
-                + "recordFileName=" + d.resolve(RECORDING) + "\n"
-                + "eventLogFileName=" + d.resolve(EVENTS) + "\n"
-                + (options.pictures ? "snapshotFileName=" + d.resolve(PICTURE) + "\n" : "")
-                + "snapshotInterval=0\n";
+                + "\n" + RunReport.propertiesText(own);
     }
 
     /** The properties text without the lines that set {@code key} (and the lines such a line continues onto). */

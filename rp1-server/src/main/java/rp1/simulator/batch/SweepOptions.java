@@ -214,8 +214,9 @@ public final class SweepOptions {
                 throw new IllegalArgumentException("--seeds " + spec + ": " + part + " is more than " + MAX_RUNS
                         + " seeds, the most runs a sweep makes");
             }
-            for (long s = from; s <= to && seeds.size() <= MAX_RUNS; s++) {
-                seeds.add(s);
+            // Counted without going past TO: from + 1 overflows when TO is the largest long.
+            for (long n = 0; n <= to - from && seeds.size() <= MAX_RUNS; n++) {
+                seeds.add(from + n);
             }
         }
         return new ArrayList<>(seeds);

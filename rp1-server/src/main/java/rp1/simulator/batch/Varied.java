@@ -10,8 +10,9 @@ import java.util.Set;
 
 /**
  * One {@code --vary KEY=...} of a sweep: a properties key and the values it takes, either listed
- * ({@code KEY=V1,V2,...}) or a numeric range ({@code KEY=FROM:TO:STEP}, both ends included when the
- * steps reach them, computed in decimal so that {@code 0.1:0.3:0.1} gives {@code 0.1,0.2,0.3}).
+ * ({@code KEY=V1,V2,...}, each once: two spellings of one number are refused) or a numeric range
+ * ({@code KEY=FROM:TO:STEP}, both ends included, the steps reaching TO exactly, computed in decimal
+ * so that {@code 0.1:0.3:0.1} gives {@code 0.1,0.2,0.3}).
  *
  * @param key    the properties key; {@code param.NAME} is a parameter of the robot
  * @param values the values, in the order given, each once
@@ -58,9 +59,37 @@ public record Varied(String key, List<String> values) {
                 throw new IllegalArgumentException("--vary " + spec + ": \"" + v + "\" is not a value (values are"
                         + " separated by commas and hold no white space)");
             }
+            String same = sameNumber(values, v.trim());
+            if (same != null) {
+                // Two configurations that differ by their spelling alone would be one counted twice.
+                throw new IllegalArgumentException("--vary " + spec + ": " + v.trim() + " is " + same + " again");
+            }
             values.add(v.trim());
         }
         return new ArrayList<>(values);
+    }
+
+    /** The value of {@code values} that is the same number as {@code v} written otherwise, or null. */
+    private static String sameNumber(Set<String> values, String v) {
+        BigDecimal n = number(v);
+        if (n == null) {
+            return null;
+        }
+        for (String w : values) {
+            BigDecimal m = number(w);
+            if (m != null && m.compareTo(n) == 0 && !w.equals(v)) {
+                return w;
+            }
+        }
+        return null;
+    }
+
+    private static BigDecimal number(String s) {
+        try {
+            return new BigDecimal(s);
+        } catch (NumberFormatException e) {
+            return null;
+        }
     }
 
     private static List<String> range(String spec, String rest) {
@@ -73,6 +102,12 @@ public record Varied(String key, List<String> values) {
         BigDecimal step = decimal(spec, parts[2]);
         if (step.signum() <= 0 || to.compareTo(from) < 0) {
             throw new IllegalArgumentException("--vary " + spec + ": a range needs FROM <= TO and a positive STEP");
+        }
+        if (to.subtract(from).remainder(step).signum() != 0) {
+            BigDecimal last = from.add(step.multiply(to.subtract(from).divideToIntegralValue(step)));
+            throw new IllegalArgumentException("--vary " + spec + ": the steps from " + parts[0].trim() + " by "
+                    + parts[2].trim() + " do not reach " + parts[1].trim() + " (the last below it is "
+                    + last.stripTrailingZeros().toPlainString() + "): give a TO they reach, both ends being run");
         }
         List<String> values = new ArrayList<>();
         for (BigDecimal v = from; v.compareTo(to) <= 0; v = v.add(step)) {

@@ -4,11 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.io.Reader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Properties;
 import java.util.TreeMap;
 
 import org.junit.jupiter.api.Test;
@@ -203,6 +205,31 @@ class ExperimentTest {
         assertTrue(failed.get(header.indexOf("reason")).startsWith("client failed: the program ended with status 3"),
                 failed.toString());
         assertEquals("0.4", failed.get(header.indexOf("distance")), "the robot's row is still there");
+    }
+
+    @Test
+    void aVariedValueReachesTheRobotAsWrittenBackslashesAndAll() throws Exception {
+        // run.ini is a properties file: unescaped, a\b reached the robot as ab and \u0041BC as ABC.
+        Path p = properties("param.place=home");
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.note=a\\b,\\u0041BC", "--out",
+                dir.resolve("out").toString()), sweeps.err());
+        for (String[] run : new String[][] {{"c1-1-home", "a\\b"}, {"c2-1-home", "\\u0041BC"}}) {
+            Properties read = new Properties();
+            try (Reader in = Files.newBufferedReader(dir.resolve("out/runs").resolve(run[0]).resolve(SweepRun.PROPERTIES))) {
+                read.load(in);
+            }
+            assertEquals(run[1], read.getProperty("param.note"));
+            assertEquals(dir.resolve("home.txt").toString(), read.getProperty("floorPlanFileName"));
+        }
+    }
+
+    @Test
+    void twoParametersThatAClientProgramWouldReadFromOneVariableAreRefused() throws Exception {
+        Path p = properties("param.a-b=1");
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.a_b=2", "--client", "true",
+                "--out", dir.resolve("out").toString()));
+        assertTrue(sweeps.err().contains("param.a-b and param.a_b would both reach the --client program as"
+                + " RP1_PARAM_a_b: rename one"), sweeps.err());
     }
 
     @Test

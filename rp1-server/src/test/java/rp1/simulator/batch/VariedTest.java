@@ -14,7 +14,24 @@ class VariedTest {
     void aListKeepsItsOrderAndARangeIsCountedInDecimals() {
         assertEquals(List.of("0.5", "0.3"), Varied.parse("param.speed=0.5,0.3,0.5").values());
         assertEquals(List.of("0.1", "0.2", "0.3"), Varied.parse("param.speed=0.1:0.3:0.1").values());
-        assertEquals(List.of("10", "25", "40"), Varied.parse("maxSimulationTime=10:45:15").values());
+        assertEquals(List.of("10", "25", "40"), Varied.parse("maxSimulationTime=10:40:15").values());
+    }
+
+    @Test
+    void aRangeWhoseStepsMissItsEndAndTwoSpellingsOfOneNumberAreRefused() {
+        // "Both ends included": 1:2:0.3 would have run 1, 1.3, 1.6 and 1.9 without a word about 2.
+        assertEquals("--vary x=1:2:0.3: the steps from 1 by 0.3 do not reach 2 (the last below it is 1.9): give a TO"
+                + " they reach, both ends being run",
+                assertThrows(IllegalArgumentException.class, () -> Varied.parse("x=1:2:0.3")).getMessage());
+        assertEquals("--vary param.speed=0.3,0.30,.3: 0.30 is 0.3 again",
+                assertThrows(IllegalArgumentException.class, () -> Varied.parse("param.speed=0.3,0.30,.3")).getMessage());
+        assertEquals(List.of("a", "A"), Varied.parse("param.name=a,A").values(), "words are not numbers");
+    }
+
+    @Test
+    void seedsUpToTheLargestAreCountedWithoutOverflow() {
+        assertEquals(List.of(Long.MAX_VALUE - 1, Long.MAX_VALUE), SweepOptions.seeds("9223372036854775806-9223372036854775807"));
+        assertEquals(List.of(Long.MAX_VALUE), SweepOptions.seeds("9223372036854775807"));
     }
 
     @Test
