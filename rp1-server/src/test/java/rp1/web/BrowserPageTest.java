@@ -168,11 +168,27 @@ class BrowserPageTest {
         assertEquals("1", browser.js("return rp1index.rows()[0][0]"), "then the longer");
         browser.driver().findElement(By.xpath("//table[@id='runs']//th[text()='end_reason']")).click();
         assertEquals("2", browser.js("return rp1index.rows()[0][0]"), "text sorts as text: client failed... first");
+        // Seed 1 never collided: its empty first_collision_time is not a collision at 0, and goes last both ways.
+        browser.driver().findElement(By.xpath("//table[@id='runs']//th[text()='first_collision_time']")).click();
+        assertEquals("2", browser.js("return rp1index.rows()[0][0]"), "the empty field last");
+        browser.driver().findElement(By.xpath("//table[@id='runs']//th[text()='first_collision_time']")).click();
+        assertEquals("2", browser.js("return rp1index.rows()[0][0]"), "the empty field last the other way too");
         assertEquals(List.of(), browser.consoleErrors());
 
         browser.driver().findElement(By.linkText("replay")).click();
         awaitTrue(() -> browser.driver().getCurrentUrl().endsWith("runs/1-WhiteRoom/replay.html"), "the run's page opens");
         assertTrue(browser.number("return rp1.frames()") > 100);
+        assertEquals(List.of(), browser.consoleErrors());
+    }
+
+    @Test
+    void aSweepIndexWithoutReplayPagesLinksToNoneAndSaysHowToWriteOne(@TempDir Path sweep) throws Exception {
+        SweepIndexTest.sweep(sweep);
+        SweepIndex.write(sweep, false);
+        browser.open(sweep.resolve(SweepIndex.NAME).toUri().toString());
+        assertEquals(List.of(), browser.driver().findElements(By.linkText("replay")), "no link to a page that is not there");
+        assertTrue(browser.driver().findElement(By.id("runs")).getText().contains("recording.txt --html "),
+                "the command that writes it");
         assertEquals(List.of(), browser.consoleErrors());
     }
 

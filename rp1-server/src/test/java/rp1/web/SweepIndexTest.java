@@ -19,9 +19,9 @@ import org.junit.jupiter.api.io.TempDir;
  */
 @Timeout(120)
 class SweepIndexTest {
-    static final String RESULTS = "seed,plan,robot,end_time,end_reason,exit_status,distance\n"
-            + "1,WhiteRoom.txt,Wanderer,20.0,max-simulation-time,0,2.5\n"
-            + "2,WhiteRoom.txt,Wanderer,3.5,\"client failed: boom, \"\"twice\"\"\",2,0.25\n";
+    static final String RESULTS = "seed,plan,robot,end_time,end_reason,exit_status,distance,first_collision_time\n"
+            + "1,WhiteRoom.txt,Wanderer,20.0,max-simulation-time,0,2.5,\n"
+            + "2,WhiteRoom.txt,Wanderer,3.5,\"client failed: boom, \"\"twice\"\"\",2,0.25,1.5\n";
 
     /** A sweep's folder: results.csv and, for seed 1, a run folder with a recording. */
     static Path sweep(Path dir) throws Exception {
