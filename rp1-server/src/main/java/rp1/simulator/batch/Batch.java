@@ -1,7 +1,9 @@
 package rp1.simulator.batch;
 
+import java.io.Closeable;
 import java.io.File;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -24,6 +26,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.regex.Pattern;
 
+import rp1.io.IoFailures;
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsPlan;
@@ -148,18 +151,35 @@ public final class Batch {
                 throw new SweepException("--out " + out + ": the path must not contain white space (a property"
                         + " value ends at the first space, and each run's files are named in its properties)");
             }
-            SweepSpec spec = SweepSpec.of(found.text, planTexts, options);
+            ClassLoader robots = ClientClassPath.loader(classPath, loader);
+            String robotCode;
+            try {
+                robotCode = RobotCode.fingerprint(classPath, robotClasses, robots, options.client, workingDirectory);
+            } catch (UncheckedIOException e) {
+                throw new SweepException("cannot read the robot's code: " + IoFailures.why(e.getCause()));
+            }
+            SweepSpec spec = SweepSpec.of(found.text, planTexts, options, robotCode);
             List<Run> runs = runs(configurations, options.seeds, plans.keySet(), out.resolve("runs"));
             List<Outcome> kept = options.resume ? kept(out, spec, runs, options) : List.of();
+            if (options.isolation == SweepOptions.Isolation.PROCESS && robots != loader && robots instanceof Closeable c) {
+                closeQuietly(c); // each run loads the robot in a process of its own
+            }
             RunEngine engine = options.isolation == SweepOptions.Isolation.PROCESS
                     ? RunEngine.inProcesses(options.timeoutSeconds, classPath)
-                    : new LoaderRuns(new ArrayList<>(robotClasses), ClientClassPath.loader(classPath, loader),
-                            options.timeoutSeconds);
+                    : new LoaderRuns(new ArrayList<>(robotClasses), robots, options.timeoutSeconds);
             return new Batch(options, out, found.text, plans, runs, spec, kept, classPath, engine);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());
         } catch (StartupException e) {
             throw new SweepException("-cp: " + e.getMessage());
+        }
+    }
+
+    private static void closeQuietly(Closeable c) {
+        try {
+            c.close();
+        } catch (IOException e) {
+            // Only open jars of a loader no run uses.
         }
     }
 

@@ -18,7 +18,8 @@ import rp1.io.IoFailures;
 
 /**
  * What decides a sweep's runs and their rows: the properties' text, the floor plans (names and text),
- * the seeds, the varied keys and their values, the {@code --client} and the timeout; not {@code --jobs}
+ * the seeds, the varied keys and their values, the {@code --client}, the robot's code ({@link RobotCode})
+ * and the timeout; not {@code --jobs}
  * or {@code --isolation}, which only decide how the runs are carried out. Kept in the
  * output folder as {@code sweep.ini}, so that {@code --resume} goes on only with the sweep that
  * folder holds. Immutable.
@@ -45,14 +46,15 @@ final class SweepSpec {
         names.put("seeds", "the seeds (--seeds)");
         names.put("vary", "the varied keys (--vary)");
         names.put("client", "the client program (--client)");
+        names.put("robot.crc32", "the robot's code (its classes, or the files the --client command names)");
         names.put("timeout", "the timeout (--timeout)");
         return names;
     }
 
     /** The specification of the sweep {@code options} ask for, with these properties and plans (name to text). */
-    static SweepSpec of(String propertiesText, Map<String, String> plans, SweepOptions options) {
+    static SweepSpec of(String propertiesText, Map<String, String> plans, SweepOptions options, String robotCode) {
         Map<String, String> v = new LinkedHashMap<>();
-        v.put(FORMAT, "2");
+        v.put(FORMAT, "3");
         v.put("properties.sha256", sha256(propertiesText));
         v.put("plans", String.join(",", plans.keySet()));
         StringBuilder planTexts = new StringBuilder();
@@ -61,6 +63,7 @@ final class SweepSpec {
         v.put("seeds", options.seeds.stream().map(String::valueOf).collect(Collectors.joining(",")));
         v.put("vary", options.varied.stream().map(Varied::toString).collect(Collectors.joining(" ")));
         v.put("client", options.client == null ? "" : options.client);
+        v.put("robot.crc32", robotCode);
         v.put("timeout", Double.toString(options.timeoutSeconds));
         return new SweepSpec(v);
     }
@@ -104,7 +107,7 @@ final class SweepSpec {
             String there = values.get(key.getKey());
             String now = here.values.get(key.getKey());
             if (!now.equals(there)) {
-                d.add(key.getKey().endsWith(".sha256") ? key.getValue() + " is not the same"
+                d.add(key.getKey().endsWith(".sha256") || key.getKey().endsWith(".crc32") ? key.getValue() + " is not the same"
                         : key.getValue() + ": " + shown(there) + " there, " + shown(now) + " here");
             }
         }

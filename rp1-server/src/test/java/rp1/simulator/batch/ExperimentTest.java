@@ -8,6 +8,7 @@ import java.io.Reader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.Properties;
@@ -160,6 +161,22 @@ class ExperimentTest {
                 dir.resolve("out").toString(), "--resume"));
         assertTrue(sweeps.err().contains("the varied keys (--vary): param.speed=0.1 there,"
                 + " param.speed=0.1,0.2 here"), sweeps.err());
+    }
+
+    @Test
+    void resumeRefusesARobotThatChangedSince() throws Exception {
+        // Rows of two versions of a robot averaged together would answer no question.
+        Path p = properties();
+        Path robot = Files.writeString(dir.resolve("robot.sh"), "exit 0\n");
+        String[] args = {"-p", p.toString(), "--seeds", "1-2", "--client", "sh " + robot, "--out", dir.resolve("out").toString()};
+        sweep(args);
+        sweeps.reset();
+        Files.writeString(robot, "exit 0 # now better\n");
+        String[] resume = Arrays.copyOf(args, args.length + 1);
+        resume[args.length] = "--resume";
+        assertEquals(1, sweep(resume));
+        assertTrue(sweeps.err().contains("the robot's code (its classes, or the files the --client command names) is"
+                + " not the same"), sweeps.err());
     }
 
     @Test
