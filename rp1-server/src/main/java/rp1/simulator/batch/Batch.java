@@ -311,11 +311,17 @@ public final class Batch {
         return runs;
     }
 
-    /** The plan's file name without its folder and its {@code .txt}, in letters a folder name may hold. */
+    /**
+     * The plan's file name without its folder and its ending ({@code .txt}, or a map's {@code .yaml} or
+     * {@code .yml}), in letters a folder name may hold.
+     */
     static String stem(String plan) {
         String name = Paths.get(plan).getFileName().toString();
-        if (name.toLowerCase(Locale.ROOT).endsWith(".txt")) {
-            name = name.substring(0, name.length() - 4);
+        for (String ending : new String[] {".txt", ".yaml", ".yml"}) {
+            if (name.toLowerCase(Locale.ROOT).endsWith(ending)) {
+                name = name.substring(0, name.length() - ending.length());
+                break;
+            }
         }
         return name.replaceAll("[^A-Za-z0-9._-]", "_");
     }
@@ -332,7 +338,8 @@ public final class Batch {
 
     /** What the engine tells the user about how it carries out the runs, or null. */
     public String engineNote() {
-        return engine.note();
+        // A --client program is the robot: no classes of a robot were loaded, shared or not.
+        return options.client != null ? null : engine.note();
     }
 
     /** Carries out the runs with {@code engine} (rp1-spark's) rather than the one --isolation chose. */

@@ -1,6 +1,7 @@
 package rp1.simulator.batch;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -202,6 +203,7 @@ class ExperimentTest {
         assertEquals("8", row.get(header.indexOf("result.seed")));
         assertEquals("0.3", row.get(header.indexOf("distance")));
         assertEquals("nobody-left", row.get(header.indexOf("reason")));
+        assertFalse(sweeps.out().contains("robot's classes"), "no classes of a robot were loaded: " + sweeps.out());
     }
 
     @Test

@@ -108,6 +108,14 @@ class SweepTest {
     }
 
     @Test
+    void aRunsFolderIsNamedAfterItsPlanWithoutTheEndingOfAPlanOrAMap() {
+        assertEquals("contest", Batch.stem("FloorPlans/contest.txt"));
+        assertEquals("rooms", Batch.stem("maps/rooms.yaml"), "a map's plan too");
+        assertEquals("lab", Batch.stem("lab.YML"));
+        assertEquals("my_plan.v2", Batch.stem("my plan.v2.txt"));
+    }
+
+    @Test
     void seedsAreRangesAndListsEachSeedOnce() {
         assertEquals(List.of(1L, 2L, 3L, 7L), SweepOptions.seeds("1-3,7,2"));
         assertThrows(IllegalArgumentException.class, () -> SweepOptions.seeds("3-1"));
