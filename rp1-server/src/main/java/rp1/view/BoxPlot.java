@@ -63,12 +63,8 @@ public final class BoxPlot {
             g.drawString("no values", left + LEFT + 8, (plotTop + plotBottom) / 2);
             return;
         }
-        if (hi - lo < 1e-12) {
-            lo -= 0.5;
-            hi += 0.5;
-        }
-        double pad = (hi - lo) * 0.05;
-        Axis axis = new Axis(lo - pad, hi + pad, plotTop, plotBottom);
+        double[] range = range(lo, hi);
+        Axis axis = new Axis(range[0], range[1], plotTop, plotBottom);
         for (int i = 0; i <= 4; i++) {
             double v = axis.lo + (axis.hi - axis.lo) * i / 4.0;
             int y = axis.y(v);
@@ -76,6 +72,9 @@ public final class BoxPlot {
             g.drawLine(left + LEFT + 1, y, left + d.width - 8, y);
             g.setColor(Color.darkGray);
             String label = tick(v, axis.hi - axis.lo);
+            if (fm.stringWidth(label) > LEFT - 6) {
+                label = compact(v); // 1234567.5 would run into the plot on its left
+            }
             g.drawString(label, left + LEFT - 4 - fm.stringWidth(label), y + fm.getAscent() / 2 - 1);
         }
         for (int i = 0; i < m.boxes().size(); i++) {
@@ -126,6 +125,33 @@ public final class BoxPlot {
         int i = (int) Math.floor(at);
         int j = Math.min(sorted.length - 1, i + 1);
         return sorted[i] + (at - i) * (sorted[j] - sorted[i]);
+    }
+
+    /**
+     * The axis from the least value {@code lo} to the greatest {@code hi}: a twentieth of the span more
+     * on either side, but not below 0 when no value is (a distance, a count, a time is never negative).
+     */
+    static double[] range(double lo, double hi) {
+        if (hi - lo < 1e-12) {
+            lo -= 0.5;
+            hi += 0.5;
+        }
+        double pad = (hi - lo) * 0.05;
+        return new double[] {lo >= 0 ? Math.max(0, lo - pad) : lo - pad, hi + pad};
+    }
+
+    /** {@code v} to 3 significant digits with a power of ten: 1.23e6. */
+    static String compact(double v) {
+        if (v == 0) {
+            return "0";
+        }
+        int exponent = (int) Math.floor(Math.log10(Math.abs(v)));
+        BigDecimal mantissa = BigDecimal.valueOf(v / Math.pow(10, exponent)).setScale(2, RoundingMode.HALF_UP);
+        if (mantissa.abs().compareTo(BigDecimal.TEN) >= 0) {
+            mantissa = mantissa.movePointLeft(1).setScale(2, RoundingMode.HALF_UP);
+            exponent++;
+        }
+        return mantissa.stripTrailingZeros().toPlainString() + "e" + exponent;
     }
 
     private static String tick(double v, double span) {
