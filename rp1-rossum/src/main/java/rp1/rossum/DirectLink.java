@@ -44,11 +44,17 @@ final class DirectLink {
 
     /**
      * Runs the client's handlers for {@code event}. A handler's RuntimeException is reported by the
-     * client and the event goes on to the next handler, as over the wire; an Error ends the session.
+     * client and the event goes on to the next handler, as over the wire; an Error ends the session,
+     * a StackOverflowError too (a handler that recursed too deep: the stack has unwound to here, as it
+     * would have on the client's own thread over a pipe). Running out of memory, or another failure of
+     * the JVM itself, is not the client's alone and goes on up.
      */
     void deliver(RsEvent event) {
         try {
             client.receiveDirect(EventCodec.copy(event));
+        } catch (StackOverflowError e) {
+            onFailure.accept(e);
+            close();
         } catch (VirtualMachineError e) {
             throw e;
         } catch (Throwable t) {

@@ -68,8 +68,23 @@ public final class RunningServer {
 
     private RunningServer(Parts parts) {
         this.parts = parts;
-        this.scheduler = new Thread(parts.simulation::runPaused, "scheduler");
+        this.scheduler = new Thread(this::simulate, "scheduler");
         scheduler.setDaemon(true);
+    }
+
+    /**
+     * The scheduler thread: runs the simulation until it is shut down. An Error that ends it (out of
+     * memory in a task) stops the run with {@link ExitStatus#FATAL_ERROR} and one log line, so that
+     * its files are closed and whoever waits for it (a sweep) learns at once, instead of a thread dying
+     * with a stack dump and a run that never ends.
+     */
+    private void simulate() {
+        try {
+            parts.simulation.runPaused();
+        } catch (Error e) {
+            parts.log.important("The simulation failed and stops: " + e);
+            requestStop(ExitStatus.FATAL_ERROR, "the simulation failed: " + e);
+        }
     }
 
     /** Starts the view, the scheduler, the listener and the loaded clients, then the clock. */

@@ -114,6 +114,35 @@ class LoadedClientTest {
     }
 
     @Test
+    void aHandlerThatRecursesWithoutEndFailsItsClientAloneEvenCalledDirectly() throws Exception {
+        // Called directly, on the thread that runs the simulation: the StackOverflowError ended that
+        // thread and, with it, the whole server (exit status 70), where over a pipe the client failed alone.
+        RecursingDlc.outOfMemory = false;
+        RunningServer server = TestServer.start(dir, "dlcEnabled=true", "dlcSetIO=true", "dlcName="
+                + RecursingDlc.class.getName() + "," + TirelessDlc.class.getName(), LOCKSTEP, "interlockEnabled=true",
+                "maxSimulationTime=2");
+        assertEquals(OptionalInt.of(ExitStatus.CLIENT_FAILED), server.awaitExit(20, TimeUnit.SECONDS), TestServer.log(dir));
+        assertTrue(server.getStopReason().startsWith("client failed: client " + RecursingDlc.class.getName()
+                + ": a handler failed: java.lang.StackOverflowError"), server.getStopReason());
+        assertTrue(TestServer.log(dir).contains("maxSimulationTime 2.0 s reached"), "the other robot went on");
+    }
+
+    @Test
+    void anErrorThatEndsTheSimulationThreadStopsTheRunWithStatus70() throws Exception {
+        RecursingDlc.outOfMemory = true;
+        try {
+            RunningServer server = TestServer.start(dir, "dlcEnabled=true", "dlcSetIO=true", "dlcName="
+                    + RecursingDlc.class.getName(), LOCKSTEP, "interlockEnabled=true", "maxSimulationTime=2");
+            assertEquals(OptionalInt.of(ExitStatus.FATAL_ERROR), server.awaitExit(20, TimeUnit.SECONDS), TestServer.log(dir));
+            assertEquals("the simulation failed: java.lang.OutOfMemoryError: made up by the test", server.getStopReason());
+            assertTrue(TestServer.log(dir).contains("The simulation failed and stops: java.lang.OutOfMemoryError"),
+                    TestServer.log(dir));
+        } finally {
+            RecursingDlc.outOfMemory = false;
+        }
+    }
+
+    @Test
     void aMissingClassOrOneThatIsNotAClientIsAClientFailure() {
         StartupException missing = assertThrows(StartupException.class,
                 () -> TestServer.start(dir, "dlcEnabled=true", "dlcName=no.such.Robot"));
