@@ -22,6 +22,8 @@ public final class RsPipe {
     private boolean writerClosed;
     private boolean readerClosed;
     private boolean readerWaiting;
+    /** Whether the reader has been answered the end of the stream. */
+    private boolean readerAtEnd;
     private final InputStream input = new PipeInput();
     private final OutputStream output = new PipeOutput();
 
@@ -54,6 +56,7 @@ public final class RsPipe {
         }
         while (count == 0) {
             if (writerClosed || readerClosed) {
+                readerAtEnd = true;
                 return -1;
             }
             readerWaiting = true;
@@ -118,12 +121,19 @@ public final class RsPipe {
     }
 
     /**
-     * Whether everything written so far has been read and the reader is blocked waiting for more:
-     * a reader that decodes messages has then dealt with every message it was sent. The simulator
-     * uses this to start its clock only once in-process clients have finished their first requests.
+     * Whether everything written so far has been read and the reader is blocked waiting for more, or
+     * has been told there is no more (the writer closed): a reader that decodes messages has then
+     * dealt with every message it was sent. The simulator uses this to start its clock only once
+     * in-process clients have finished their first requests; a client that sent them and ended at
+     * once (its run() threw) is drained too, or the clock would wait for it until connectTimeout.
      */
     public synchronized boolean isDrained() {
-        return count == 0 && readerWaiting;
+        return count == 0 && (readerWaiting || readerAtEnd);
+    }
+
+    /** Whether the reader has been answered the end of the stream (the writer closed, everything read). */
+    public synchronized boolean isAtEnd() {
+        return readerAtEnd;
     }
 
     private synchronized void closeWriter() {

@@ -21,6 +21,7 @@ public final class InProcessClient {
     private final RsPipe toServer = new RsPipe();
     private final RsPipe toClient = new RsPipe();
     private final ClientSession session;
+    private final Thread reader;
 
     /**
      * Connects {@code client} to {@code simulation}: the connection is attached and its reader thread
@@ -40,7 +41,7 @@ public final class InProcessClient {
                            RsConnection connection, Function<RsPipe, OutputStream> outbound) {
         connection.setInputOutputStreams(toServer.getInputStream(), outbound.apply(toClient));
         session = simulation.attach(connection, description, Simulation.Link.READER);
-        Thread reader = new Thread(connection, "connection " + description);
+        reader = new Thread(connection, "connection " + description);
         reader.setDaemon(true);
         reader.start();
         client.setInputOutputStreams(toClient.getInputStream(), toServer.getOutputStream());
@@ -60,13 +61,15 @@ public final class InProcessClient {
      * {@code initialize()}, so their first requests are all stamped at time 0.
      */
     public boolean isDrained() {
-        return toServer.isDrained();
+        // A client that has already ended (its run() threw at once): drained once the reader has also
+        // dealt with the end, its robot's leaving, so that this happens before the clock starts too.
+        return toServer.isDrained() && !(toServer.isAtEnd() && reader.isAlive());
     }
 
     /** Waits until {@link #isDrained()}, at most {@code millis}; returns whether it is. */
     public boolean awaitDrained(long millis) throws InterruptedException {
         long deadline = System.nanoTime() + millis * 1_000_000L;
-        while (!toServer.isDrained()) {
+        while (!isDrained()) {
             if (System.nanoTime() > deadline) {
                 return false;
             }

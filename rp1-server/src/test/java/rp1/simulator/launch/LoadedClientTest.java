@@ -143,6 +143,21 @@ class LoadedClientTest {
     }
 
     @Test
+    void aClientWhoseRunThrowsAtOnceEndsTheRunAtOnceEveryTime() throws Exception {
+        // Its pipe was closed before the clock started, and the clock waited for the pipe to be read
+        // "to its end" until connectTimeout (here a minute: the test's timeout would end it first).
+        for (int i = 0; i < 3; i++) {
+            int status = runToTheEnd("dlcEnabled=true", "dlcName=" + RunThrowsDlc.class.getName(), LOCKSTEP,
+                    "interlockEnabled=true", "enableNetworkClients=false", "maxSimulationTime=60", "connectTimeout=60");
+            assertEquals(ExitStatus.CLIENT_FAILED, status, TestServer.log(dir));
+            String log = TestServer.log(dir);
+            assertFalse(log.contains("has not finished"), log);
+            assertTrue(log.contains(" 0000.000: client " + RunThrowsDlc.class.getName()
+                    + ": run() failed: java.lang.IllegalStateException: no run today"), log);
+        }
+    }
+
+    @Test
     void aMissingClassOrOneThatIsNotAClientIsAClientFailure() {
         StartupException missing = assertThrows(StartupException.class,
                 () -> TestServer.start(dir, "dlcEnabled=true", "dlcName=no.such.Robot"));
