@@ -3,6 +3,7 @@ package rp1.simulator.record;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.function.LongSupplier;
 import java.util.zip.CRC32;
 
 import rp1.io.IoFailures;
@@ -28,6 +29,12 @@ public final class EventStream implements Simulation.EventListener {
     private RunFile out;
     private long count;
     private String failure;
+    /** The model tasks run so far, while events are sent; null if not watched. */
+    private LongSupplier tasks;
+    /** The count and checksum before the first event sent while {@code markTask} tasks had run. */
+    private long markTask = -1;
+    private long markCount;
+    private long markChecksum;
 
     private EventStream(RunFile out, RsLogInterface log) {
         this.out = out;
@@ -65,6 +72,14 @@ public final class EventStream implements Simulation.EventListener {
         }
         // One encoding serves the checksum and the file.
         byte[] line = (EventText.line(session.getNumber(), event) + '\n').getBytes(StandardCharsets.UTF_8);
+        if (tasks != null) {
+            long k = tasks.getAsLong();
+            if (k != markTask) {
+                markTask = k;
+                markCount = count;
+                markChecksum = checksum.getValue();
+            }
+        }
         checksum.update(line);
         count++;
         if (out != null) {
@@ -74,6 +89,24 @@ public final class EventStream implements Simulation.EventListener {
                 stop("cannot write the event log " + out.file() + ": " + IoFailures.why(e));
             }
         }
+    }
+
+    /**
+     * Watches how many model tasks have run as events are sent ({@code tasks}, read on the thread that
+     * sends them), so that {@link #before} can leave out the events of a task that never finished.
+     */
+    public synchronized void watchTasks(LongSupplier tasks) {
+        this.tasks = tasks;
+    }
+
+    /**
+     * The count and checksum of the events sent before the task that ran after {@code task} model
+     * tasks had: those of the finished tasks, when that one never finished (a robot's handler that
+     * never returned as the server stopped). All of them if it sent none, or nothing is watched.
+     */
+    public synchronized long[] before(long task) {
+        return tasks != null && markTask == task ? new long[] {markCount, markChecksum}
+                : new long[] {count, checksum.getValue()};
     }
 
     /** Puts the events logged so far on disk; a failure stops the log. Any thread. */

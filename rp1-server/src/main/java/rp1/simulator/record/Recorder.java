@@ -167,8 +167,10 @@ public final class Recorder implements InputQueue.Listener {
     }
 
     /**
-     * Writes the end of the run and closes the file. Call once the scheduler has stopped and no task
-     * is running: the number of model tasks run and the time are then final.
+     * Writes the end of the run and closes the file. Call once the scheduler has stopped: the number of
+     * model tasks run and the time are then final. If a task is still running (a robot's handler that
+     * never returned), the run ends with the tasks that finished, and the events they sent: a replay
+     * runs those and stops there.
      *
      * @param events what was sent to the clients, for the replay to check itself against
      */
@@ -177,8 +179,10 @@ public final class Recorder implements InputQueue.Listener {
             return;
         }
         try {
-            write(new TextLine(RecordingFormat.END).integer(scheduler.modelTasksRun()).real(scheduler.recordedTime())
-                    .word("events").integer(events.count()).word("crc").word(Long.toHexString(events.checksum())));
+            long tasks = scheduler.modelTasksRun();
+            long[] sent = scheduler.isIdle() ? new long[] {events.count(), events.checksum()} : events.before(tasks);
+            write(new TextLine(RecordingFormat.END).integer(tasks).real(scheduler.recordedTime())
+                    .word("events").integer(sent[0]).word("crc").word(Long.toHexString(sent[1])));
             out.finish();
         } catch (IOException e) {
             failure = "cannot finish the recording " + fileName + ": " + e.getMessage() + "; what reached the disk is in "

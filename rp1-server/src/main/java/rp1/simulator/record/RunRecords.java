@@ -81,6 +81,7 @@ public final class RunRecords implements AutoCloseable {
                 throw new IOException("cannot create the recording " + recording + " (recordFileName): " + IoFailures.why(e), e);
             }
             simulation.getInputs().setListener(recorder);
+            events.watchTasks(simulation.getScheduler()::modelTasksRun);
         }
         simulation.addEventListener(events);
         return new RunRecords(recorder, events);
