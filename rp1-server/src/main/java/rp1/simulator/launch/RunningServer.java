@@ -74,9 +74,10 @@ public final class RunningServer {
 
     /**
      * The scheduler thread: runs the simulation until it is shut down. An Error that ends it (out of
-     * memory in a task) stops the run with {@link ExitStatus#FATAL_ERROR} and one log line, so that
-     * its files are closed and whoever waits for it (a sweep) learns at once, instead of a thread dying
-     * with a stack dump and a run that never ends.
+     * memory in a task) first stops the run with {@link ExitStatus#FATAL_ERROR} and a log line, so that
+     * its files are closed and whoever waits for it (a sweep, whose other runs go on) learns at once
+     * instead of waiting for a run that never ends; then it goes on up, to the process's handler
+     * ({@link FatalErrors} in a server of its own).
      */
     private void simulate() {
         try {
@@ -84,6 +85,7 @@ public final class RunningServer {
         } catch (Error e) {
             parts.log.important("The simulation failed and stops: " + e);
             requestStop(ExitStatus.FATAL_ERROR, "the simulation failed: " + e);
+            throw e;
         }
     }
 

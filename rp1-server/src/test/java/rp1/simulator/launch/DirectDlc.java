@@ -4,8 +4,6 @@ import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 import rp1.rossum.event.RsPositionEvent;
 
@@ -26,9 +24,7 @@ public class DirectDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("direct");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.15));
-        sendBodySpecification(body);
+        sendBodySpecification(TestServer.roundBody("direct"));
         addPositionEventHandler(positions::add);
         addHeartbeatEventHandler(e -> {
             beatThreads.add(Thread.currentThread().getName());

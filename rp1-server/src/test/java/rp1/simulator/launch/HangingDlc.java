@@ -3,8 +3,6 @@ package rp1.simulator.launch;
 import java.io.IOException;
 import java.util.concurrent.CountDownLatch;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 
 /** A loaded client, called directly, whose heartbeat handler never returns at the third beat (until the test lets it). */
@@ -15,9 +13,7 @@ public class HangingDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("hanging");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.15));
-        sendBodySpecification(body);
+        sendBodySpecification(TestServer.roundBody("hanging"));
         addHeartbeatEventHandler(e -> {
             if (e.sequence == 3) {
                 try {

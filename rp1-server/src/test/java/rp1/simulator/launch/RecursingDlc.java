@@ -2,8 +2,6 @@ package rp1.simulator.launch;
 
 import java.io.IOException;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 
 /**
@@ -18,9 +16,7 @@ public class RecursingDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("recursing");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.15));
-        sendBodySpecification(body);
+        sendBodySpecification(TestServer.roundBody("recursing"));
         addHeartbeatEventHandler(e -> {
             if (e.sequence == 3) {
                 if (outOfMemory) {

@@ -2,8 +2,6 @@ package rp1.simulator.launch;
 
 import java.io.IOException;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 
 /** A loaded client whose run() throws as soon as it is called, after an initialize() that placed its robot. */
@@ -11,9 +9,7 @@ public class RunThrowsDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("short-lived");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.15));
-        sendBodySpecification(body);
+        sendBodySpecification(TestServer.roundBody("short-lived"));
         sendPlacementRequest("p1");
     }
 

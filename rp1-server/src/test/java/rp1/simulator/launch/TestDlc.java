@@ -7,8 +7,6 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 import rp1.rossum.RsLogInterface;
 
@@ -70,9 +68,7 @@ public class TestDlc extends RsClient {
             initializing = false;
         }
         log("TestDlc says hello");
-        RsBody body = new RsBody("dlc");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.15));
-        sendBodySpecification(body);
+        sendBodySpecification(TestServer.roundBody("dlc"));
         addHeartbeatEventHandler(e -> {
             BEATS.add(e.simTime);
             if (e.sequence == beatsBeforeLeaving()) {

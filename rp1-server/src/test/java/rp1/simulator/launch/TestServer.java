@@ -7,6 +7,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyCircle;
+
 /**
  * Servers for tests, started in-process from a properties file written to a temporary directory, on a
  * free port, headless, logging to {@code server.log} there. The directory also holds {@code arena.txt}:
@@ -89,5 +92,12 @@ final class TestServer {
             }
             Thread.sleep(10);
         }
+    }
+
+    /** The body the test clients send: a disc of radius 0.15 m named {@code name}. */
+    static RsBody roundBody(String name) {
+        RsBody body = new RsBody(name);
+        body.addPart(new RsBodyCircle(0.0, 0.0, 0.15));
+        return body;
     }
 }
