@@ -1,8 +1,12 @@
 package rp1.simulator.config;
 
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -223,6 +227,33 @@ public final class ServerConfig {
         if (lockstep && !interlockEnabled) {
             throw new ConfigException(where + "simulationSpeed=max needs interlockEnabled=true "
                     + "(without the interlock nothing would hold simulated time back for the clients)");
+        }
+        checkOutputsApart(where);
+    }
+
+    /**
+     * The files a run writes are different files: an event log named as the recording replaced it
+     * (the recording was lost), a log named as the recording overwrote it without a word.
+     */
+    private void checkOutputsApart(String where) throws ConfigException {
+        Map<Path, String> outputs = new LinkedHashMap<>();
+        String[][] named = {{"recordFileName", recordFileName}, {"eventLogFileName", eventLogFileName},
+            {"logFileName", logToFile ? logFileName : null}, {"snapshotFileName", snapshotFileName}};
+        for (String[] output : named) {
+            if (output[1] == null) {
+                continue;
+            }
+            Path file;
+            try {
+                file = Paths.get(output[1]).toAbsolutePath().normalize();
+            } catch (InvalidPathException e) {
+                continue; // said where the file is opened
+            }
+            String other = outputs.putIfAbsent(file, output[0]);
+            if (other != null) {
+                throw new ConfigException(where + other + " and " + output[0] + " name the same file, " + output[1]
+                        + ": each of the run's outputs needs a file of its own");
+            }
         }
     }
 

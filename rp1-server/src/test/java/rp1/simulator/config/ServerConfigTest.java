@@ -106,6 +106,19 @@ class ServerConfigTest {
     }
 
     @Test
+    void twoOutputsNamingOneFileAreRefused() throws Exception {
+        // An event log named as the recording replaced it; a log named as the recording overwrote it.
+        ConfigException e = assertThrows(ConfigException.class,
+                () -> config("floorPlanFileName=x\nrecordFileName=run.rec\neventLogFileName=./run.rec\n"));
+        assertEquals("test.ini: recordFileName and eventLogFileName name the same file, ./run.rec: each of the run's"
+                + " outputs needs a file of its own", e.getMessage());
+        assertThrows(ConfigException.class,
+                () -> config("floorPlanFileName=x\nrecordFileName=out.log\nlogToFile=true\nlogFileName=out.log\n"));
+        config("floorPlanFileName=x\nrecordFileName=out.log\nlogToFile=false\nlogFileName=out.log\n");
+        config("floorPlanFileName=x\nrecordFileName=run.rec\neventLogFileName=events.txt\nsnapshotFileName=end.png\n");
+    }
+
+    @Test
     void badValuesNameTheFileTheKeyAndTheValue() {
         assertMessage("port=77x\n", "test.ini: port=77x: an integer expected");
         assertMessage("port=0\n", "test.ini: port=0: must be in [1, 65535]");
