@@ -10,7 +10,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.stream.Collectors;
 
 import rp1.simulator.launch.JavaCommand;
@@ -114,15 +116,30 @@ final class ProcessRuns implements RunEngine {
         stop(p, STOP_GRACE_SECONDS);
     }
 
-    /** Stops {@code p} as Ctrl-C would (SIGTERM), forcibly if it is still going {@code graceSeconds} later. */
+    /**
+     * Stops {@code p} and the processes it started as Ctrl-C would (SIGTERM), forcibly if they are still
+     * going {@code graceSeconds} later. Its children are asked too: a {@code --client} script that runs
+     * the robot without {@code exec} left the robot running, its parent gone, after every run.
+     */
     static void stop(Process p, long graceSeconds) throws InterruptedException {
         if (!p.isAlive()) {
             return;
         }
+        // Taken first: once p has ended, the processes it started are no longer its descendants.
+        List<ProcessHandle> started = p.descendants().toList();
         p.destroy();
+        started.forEach(ProcessHandle::destroy);
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(graceSeconds);
         if (!p.waitFor(graceSeconds, TimeUnit.SECONDS)) {
             p.destroyForcibly();
             p.waitFor();
+        }
+        for (ProcessHandle h : started) {
+            try {
+                h.onExit().get(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+            } catch (TimeoutException | ExecutionException e) {
+                h.destroyForcibly();
+            }
         }
     }
 

@@ -70,6 +70,9 @@ public final class SweepRun {
         // run still closes its recording and event log before the process ends.
         CompletableFuture<RunningServer> started = new CompletableFuture<>();
         Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnceStarted(started), "stop the run"));
+        // A sweep killed outright (SIGKILL) stops nothing: a run whose sweep is gone stops itself, as
+        // stopped, rather than run on for ever re-parented to init.
+        ProcessHandle.current().parent().ifPresent(sweep -> sweep.onExit().thenRun(() -> System.exit(Interruption.STATUS)));
         ClassLoader robots = SweepRun.class.getClassLoader();
         if (args.length == 3) {
             try {
