@@ -75,6 +75,11 @@ public final class ClientListener {
     private final ByteBuffer readBuffer = ByteBuffer.allocate(READ_BUFFER_BYTES);
     private final List<Peer> introducing = new ArrayList<>();
     private volatile boolean closed;
+    /** What all the clients' incomplete messages may hold, and hold now (as last counted: see {@link #checkMessageBudget}). */
+    private final long allIncomplete;
+    private long incomplete;
+    /** What the events waiting for all the clients may hold. */
+    private final SharedBudget allOutput;
 
     private ClientListener(ServerSocketChannel serverSocket, Selector selector, Simulation simulation,
                            ClientRegistry clients, RsLogInterface log, Settings settings) {
@@ -87,6 +92,8 @@ public final class ClientListener {
         this.queueLimit = settings.queueLimit;
         this.budgets = settings.budgets;
         this.acceptor = settings.acceptor;
+        this.allIncomplete = settings.allClients;
+        this.allOutput = new SharedBudget(settings.allClients);
     }
 
     /** What a listener needs besides its address. */
@@ -95,6 +102,11 @@ public final class ClientListener {
         final int queueLimit;
         final ClientBudgets budgets;
         final Acceptor acceptor;
+        /**
+         * Bytes all the clients together may make the server hold in incomplete messages, and again in
+         * events they do not read: a quarter of the JVM's heap each, unless a test says otherwise.
+         */
+        final long allClients;
 
         /**
          * @param connectTimeout seconds a new connection may take to send CONNECT
@@ -110,19 +122,28 @@ public final class ClientListener {
          * @param budgets        what each client may make the server hold
          */
         public Settings(double connectTimeout, int queueLimit, ClientBudgets budgets) {
-            this(connectTimeout, queueLimit, budgets, ServerSocketChannel::accept);
+            this(connectTimeout, queueLimit, budgets, ServerSocketChannel::accept, Runtime.getRuntime().maxMemory() / 4);
         }
 
-        private Settings(double connectTimeout, int queueLimit, ClientBudgets budgets, Acceptor acceptor) {
+        private Settings(double connectTimeout, int queueLimit, ClientBudgets budgets, Acceptor acceptor, long allClients) {
             this.connectTimeout = connectTimeout;
             this.queueLimit = queueLimit;
             this.budgets = budgets;
             this.acceptor = acceptor;
+            this.allClients = allClients;
         }
 
         /** The same settings, taking connections with {@code a} (tests make accepting fail). */
         Settings withAcceptor(Acceptor a) {
-            return new Settings(connectTimeout, queueLimit, budgets, a);
+            return new Settings(connectTimeout, queueLimit, budgets, a, allClients);
+        }
+
+        /**
+         * The same settings with what all the clients together may make the server hold, in incomplete
+         * messages and again in events waiting for them (by default a quarter of the JVM's heap each).
+         */
+        public Settings withAllClients(long bytes) {
+            return new Settings(connectTimeout, queueLimit, budgets, acceptor, bytes);
         }
     }
 
@@ -171,6 +192,8 @@ public final class ClientListener {
         /** What was read this round, one array per read, in order; the connection joins split messages. */
         final List<byte[]> unread = new ArrayList<>();
         boolean ended;
+        /** The bytes of its incomplete message as last counted in {@link #incomplete}. */
+        int held;
 
         Peer(SocketChannel channel, ClientConnection connection, long deadline) {
             this.channel = channel;
@@ -304,7 +327,7 @@ public final class ClientListener {
         try {
             channel.configureBlocking(false);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
-            OutboundQueue out = OutboundQueue.start(new ChannelTransport(channel), queueLimit, budgets.output,
+            OutboundQueue out = OutboundQueue.start(new ChannelTransport(channel), queueLimit, budgets.output, allOutput,
                     "writer " + description, c::close);
             c.setInputOutputStreams(null, out);
             simulation.attach(c, description, Simulation.Link.SHARED_READER);
@@ -352,6 +375,7 @@ public final class ClientListener {
         ClientConnection c = p.connection;
         if (c.hasEnded()) {
             p.unread.clear();
+            release(p);
             closeQuietly(p.channel);
             return;
         }
@@ -359,7 +383,7 @@ public final class ClientListener {
         try {
             for (byte[] chunk : p.unread) {
                 c.receive(chunk, 0, chunk.length);
-                checkMessageBudget(c);
+                checkMessageBudget(p);
             }
         } catch (IOException e) {
             String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
@@ -368,6 +392,7 @@ public final class ClientListener {
             } else {
                 handshakeFailed(p, reason);
             }
+            release(p);
             closeQuietly(p.channel);
             return;
         } catch (RuntimeException e) {
@@ -376,6 +401,7 @@ public final class ClientListener {
             StringWriter trace = new StringWriter();
             e.printStackTrace(new PrintWriter(trace));
             c.close("handling its message failed: " + trace);
+            release(p);
             closeQuietly(p.channel);
             return;
         } finally {
@@ -392,17 +418,49 @@ public final class ClientListener {
             } else {
                 handshakeFailed(p, "the connection closed before CONNECT");
             }
+            release(p);
             closeQuietly(p.channel);
         }
     }
 
-    /** A client whose incomplete message has outgrown its budget is refused like a protocol error. */
-    private void checkMessageBudget(ClientConnection c) throws IOException {
-        int held = c.getIncompleteMessageBytes();
+    /**
+     * A client whose incomplete message has outgrown its budget is refused like a protocol error; so is
+     * one whose message would take the clients' incomplete messages together beyond what they all may
+     * hold (many connections, each within its own budget, ran a server out of memory).
+     */
+    private void checkMessageBudget(Peer p) throws IOException {
+        int held = p.connection.getIncompleteMessageBytes();
         if (held > budgets.message) {
             throw new IOException("over budget: an incomplete message of " + held + " bytes, the budget is "
                     + budgets.message + " (clientMessageBudget)");
         }
+        incomplete += held - p.held;
+        p.held = held;
+        // The running count can only be too high (a client closed elsewhere): count again before refusing.
+        if (incomplete > allIncomplete && countIncomplete() > allIncomplete) {
+            throw new IOException("over budget: the clients' incomplete messages would hold " + incomplete + " bytes"
+                    + " in all, more than the " + allIncomplete + " they all may (a quarter of the server's memory);"
+                    + " this client's is " + held + " bytes");
+        }
+    }
+
+    /** The bytes of every open client's incomplete message, counted anew. */
+    private long countIncomplete() {
+        long total = 0;
+        for (SelectionKey key : selector.keys()) {
+            if (key.attachment() instanceof Peer q) {
+                q.held = q.connection.hasEnded() ? 0 : q.connection.getIncompleteMessageBytes();
+                total += q.held;
+            }
+        }
+        incomplete = total;
+        return total;
+    }
+
+    /** The peer's incomplete message is no longer held. */
+    private void release(Peer p) {
+        incomplete -= p.held;
+        p.held = 0;
     }
 
     private void expireHandshakes() {
@@ -415,6 +473,7 @@ public final class ClientListener {
             } else if (now - p.deadline >= 0) {
                 it.remove();
                 handshakeFailed(p, "no CONNECT within " + connectTimeoutNanos / 1_000_000L + " ms (connectTimeout)");
+                release(p);
                 closeQuietly(p.channel);
             }
         }

@@ -46,9 +46,12 @@ public final class OutboundQueue extends OutputStream {
     private int waiting;
     /** Bytes of the messages not yet wholly handed to the transport. */
     private long waitingBytes;
+    /** What all the server's clients together may have waiting, or null if only this one's budget counts. */
+    private final SharedBudget shared;
     private boolean closed;
 
-    private OutboundQueue(Transport transport, int limit, int byteBudget, String threadName, FailureHandler onFailure) {
+    private OutboundQueue(Transport transport, int limit, int byteBudget, SharedBudget shared, String threadName,
+                          FailureHandler onFailure) {
         if (limit < 1) {
             throw new IllegalArgumentException("limit must be positive, got " + limit);
         }
@@ -58,6 +61,7 @@ public final class OutboundQueue extends OutputStream {
         this.transport = transport;
         this.limit = limit;
         this.byteBudget = byteBudget;
+        this.shared = shared;
         this.onFailure = onFailure;
         this.threadName = threadName;
     }
@@ -82,7 +86,16 @@ public final class OutboundQueue extends OutputStream {
      */
     public static OutboundQueue start(Transport transport, int limit, int byteBudget, String threadName,
                                       FailureHandler onFailure) {
-        return new OutboundQueue(transport, limit, byteBudget, threadName, onFailure);
+        return new OutboundQueue(transport, limit, byteBudget, null, threadName, onFailure);
+    }
+
+    /**
+     * As {@link #start(Transport, int, int, String, FailureHandler)}, the bytes waiting also counted in
+     * {@code shared}: the client is given up when all the clients together would have more waiting.
+     */
+    static OutboundQueue start(Transport transport, int limit, int byteBudget, SharedBudget shared, String threadName,
+                               FailureHandler onFailure) {
+        return new OutboundQueue(transport, limit, byteBudget, shared, threadName, onFailure);
     }
 
     @Override
@@ -130,15 +143,20 @@ public final class OutboundQueue extends OutputStream {
             }
         }
         if (sent < messageLength) {
-            if (waiting >= limit) {
-                closeQueue();
-                return "not reading: " + waiting + " messages waiting, the limit is " + limit + " (clientQueueLimit)";
-            }
             int rest = messageLength - sent;
-            if (waiting > 0 && waitingBytes + rest > byteBudget) {
-                closeQueue();
-                return "not reading: " + (waitingBytes + rest) + " bytes of events waiting, the budget is "
+            String why = null;
+            if (waiting >= limit) {
+                why = "not reading: " + waiting + " messages waiting, the limit is " + limit + " (clientQueueLimit)";
+            } else if (waiting > 0 && waitingBytes + rest > byteBudget) {
+                why = "not reading: " + (waitingBytes + rest) + " bytes of events waiting, the budget is "
                         + byteBudget + " (clientOutputBudget)";
+            } else if (shared != null && !shared.take(rest)) {
+                why = "not reading: the events waiting for all the clients would hold more than " + shared.limit()
+                        + " bytes in all (a quarter of the server's memory), " + (waitingBytes + rest) + " of them for this one";
+            }
+            if (why != null) {
+                closeQueue(); // which forgets what waited: the reason is told first
+                return why;
             }
             queue.addLast(Arrays.copyOfRange(message, sent, messageLength));
             waiting++;
@@ -187,6 +205,11 @@ public final class OutboundQueue extends OutputStream {
         closed = true;
         queue.clear();
         messageLength = 0;
+        if (shared != null) {
+            shared.give(waitingBytes);
+        }
+        waiting = 0;
+        waitingBytes = 0;
         notifyAll();
     }
 
@@ -237,9 +260,17 @@ public final class OutboundQueue extends OutputStream {
     }
 
     private synchronized void written(byte[][] messages) {
+        if (closed) {
+            return; // closing let go of everything, these too
+        }
         waiting -= messages.length;
+        long bytes = 0;
         for (byte[] m : messages) {
-            waitingBytes -= m.length;
+            bytes += m.length;
+        }
+        waitingBytes -= bytes;
+        if (shared != null) {
+            shared.give(bytes);
         }
     }
 

@@ -91,6 +91,30 @@ class OutboundQueueTest {
     }
 
     @Test
+    void readersThatStopReadingAreCutOffOnceAllOfThemTogetherPassTheSharedBudget() throws Exception {
+        // Each within its own 1 MB budget; together beyond the 10 kB all of them may have waiting.
+        SharedBudget all = new SharedBudget(10_000);
+        OutboundQueue first = OutboundQueue.start(Transport.of(new RsPipe(64)), 10000, 1 << 20, all, "writer 1", failures::add);
+        OutboundQueue second = OutboundQueue.start(Transport.of(new RsPipe(64)), 10000, 1 << 20, all, "writer 2", failures::add);
+        byte[] message = new byte[1000];
+        for (int i = 0; i < 6; i++) {
+            first.write(message);
+            first.flush();
+        }
+        IOException cutOff = assertThrows(IOException.class, () -> {
+            for (int i = 0; i < 6; i++) {
+                second.write(message);
+                second.flush();
+            }
+        });
+        assertTrue(cutOff.getMessage().contains("the events waiting for all the clients would hold more than 10000 bytes"),
+                cutOff.getMessage());
+        assertEquals(1, failures.size(), "the second alone: " + failures);
+        first.close();
+        assertEquals(0, all.held(), "closed queues let go of what they held");
+    }
+
+    @Test
     void oneMessageLargerThanTheBudgetMayStillWait() throws Exception {
         RsPipe slow = new RsPipe(64);
         OutboundQueue q = OutboundQueue.start(Transport.of(slow), 10000, 4096, "writer test", failures::add);
