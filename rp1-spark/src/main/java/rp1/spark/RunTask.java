@@ -3,6 +3,7 @@ package rp1.spark;
 import java.io.File;
 import java.io.IOException;
 import java.io.Serializable;
+import java.io.StringReader;
 import java.io.UncheckedIOException;
 import java.net.InetAddress;
 import java.nio.charset.StandardCharsets;
@@ -14,11 +15,14 @@ import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Properties;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.stream.Stream;
 
 import org.apache.spark.SparkFiles;
 
+import rp1.simulator.batch.PropertiesText;
 import rp1.simulator.batch.RunEngine;
 import rp1.simulator.batch.SweepRun;
 import rp1.simulator.batch.Trail;
@@ -33,6 +37,9 @@ import rp1.simulator.batch.Trail;
  */
 final class RunTask implements Serializable {
     private static final long serialVersionUID = 1L;
+    /** The properties that name the run's output files. */
+    private static final List<String> OUTPUTS = List.of("logFileName", "recordFileName", "eventLogFileName",
+            "snapshotFileName");
     /** Files up to this size come back whatever {@code --keep} says. */
     static final long SMALL_BYTES = 4L << 20;
     /** The --keep name that brings back every file. */
@@ -72,9 +79,8 @@ final class RunTask implements Serializable {
         try {
             Path plan = dir.resolve("plan-" + Paths.get(planName).getFileName());
             Files.write(plan, planText.getBytes(StandardCharsets.UTF_8));
-            String here = propertiesText.replace(driverDir + File.separator, dir + File.separator)
-                    + "\n# rp1-spark: the plan's text, written beside the run\nfloorPlanFileName=" + plan + "\n";
-            Files.write(dir.resolve(SweepRun.PROPERTIES), here.getBytes(StandardCharsets.UTF_8));
+            Files.write(dir.resolve(SweepRun.PROPERTIES), relocated(propertiesText, driverDir, dir, plan)
+                    .getBytes(StandardCharsets.UTF_8));
             RunEngine.Ran ran = local.run(dir, robotClassPath(), timeoutSeconds);
             ran.report().write(dir);
             Files.delete(dir.resolve(SweepRun.PROPERTIES));
@@ -83,6 +89,32 @@ final class RunTask implements Serializable {
         } finally {
             delete(dir);
         }
+    }
+
+    /**
+     * The run's properties as they take effect, with its output files in {@code dir} instead of the
+     * driver's {@code driverDir}, and the plan's copy {@code plan} as its floor plan. Read and written
+     * as properties, key by key: run.ini's values are escaped (a path with a drive letter's colon, or
+     * an accented letter, does not read as it is written), so the text cannot be rewritten as text.
+     */
+    static String relocated(String propertiesText, String driverDir, Path dir, Path plan) {
+        Properties p = new Properties();
+        try {
+            p.load(new StringReader(propertiesText));
+        } catch (IOException e) {
+            throw new UncheckedIOException("a string cannot fail to be read", e);
+        }
+        Map<String, String> entries = new TreeMap<>();
+        p.stringPropertyNames().forEach(k -> entries.put(k, p.getProperty(k)));
+        for (String key : OUTPUTS) {
+            String file = entries.get(key);
+            if (file != null && file.startsWith(driverDir + File.separator)) {
+                entries.put(key, dir + file.substring(driverDir.length()));
+            }
+        }
+        entries.put("floorPlanFileName", plan.toString());
+        return "# rp1-spark: the run's properties, its files here and the plan's text beside it\n"
+                + PropertiesText.of(entries);
     }
 
     /** Where this executor put the robot's classes that came with the job. */

@@ -515,7 +515,7 @@ public final class Batch {
         }
         own.put("snapshotInterval", "0");
         return runPropertiesText + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + describe(run.configuration())
-                + "\n" + RunReport.propertiesText(own);
+                + "\n" + PropertiesText.of(own);
     }
 
     /** The properties text without the lines that set {@code key} (and the lines such a line continues onto). */

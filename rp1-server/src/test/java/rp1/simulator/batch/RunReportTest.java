@@ -49,10 +49,10 @@ class RunReportTest {
                 entries.put(word(random, alphabet, 1 + random.nextInt(8)), word(random, alphabet, random.nextInt(10)));
             }
             Properties loaded = new Properties();
-            loaded.load(new StringReader(RunReport.propertiesText(entries)));
+            loaded.load(new StringReader(PropertiesText.of(entries)));
             Map<String, String> back = new LinkedHashMap<>();
             loaded.stringPropertyNames().forEach(k -> back.put(k, loaded.getProperty(k)));
-            assertEquals(entries, back, RunReport.propertiesText(entries));
+            assertEquals(entries, back, PropertiesText.of(entries));
         }
     }
 
