@@ -1,5 +1,7 @@
 package rp1.simulator;
 
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -69,6 +71,8 @@ public final class Simulation {
     private volatile ClientBudgets clientBudgets = ClientBudgets.DEFAULTS;
     private final ReportedResults reportedResults = new ReportedResults();
     private final AskedParameters askedParameters = new AskedParameters();
+    /** The first task failure, as {@link #describe} words it; written on the task thread. */
+    private volatile String taskFailure;
 
     public Simulation(RsPlan plan, SimulationSettings settings, RsLogInterface log) {
         this.settings = settings;
@@ -81,13 +85,31 @@ public final class Simulation {
                 settings.robotsInteract);
         this.heartbeats = new Heartbeats(scheduler);
         this.host = new SessionHost();
-        scheduler.setFailureHandler(e -> log.logIt("X", "A simulation task failed; the simulation goes on: "
-                + describe(e)));
+        scheduler.setFailureHandler(this::taskFailed);
         world.setNoise(settings.newNoise());
         world.setPlacementListener(this::placedRobotsChanged);
         if (settings.isLockstep()) {
             scheduler.hold();
         }
+    }
+
+    /**
+     * A task, or an input applied between tasks, threw: a defect of the simulator's. The simulation goes
+     * on, as a robot's world would, but the run is not to be trusted: the first failure is kept for the
+     * run's status ({@link #getTaskFailure()}), and the log gets the whole stack for the report.
+     */
+    private void taskFailed(RuntimeException e) {
+        if (taskFailure == null) {
+            taskFailure = describe(e);
+        }
+        StringWriter trace = new StringWriter();
+        e.printStackTrace(new PrintWriter(trace));
+        log.logIt("X", "A simulation task failed; the simulation goes on, its run failed: " + trace.toString().stripTrailing());
+    }
+
+    /** The first failure of a task of this simulation ({@link #taskFailed}), or null if none failed. */
+    public String getTaskFailure() {
+        return taskFailure;
     }
 
     private static String describe(Throwable t) {

@@ -39,7 +39,7 @@ public final class ResultsNotes {
         c.put("first_collision_time", new String[] {"s", "simulated time of the first; empty if none"});
         c.put("events", new String[] {"count", "how many events its client was sent"});
         c.put("status", new String[] {"", "the server's exit status: 0 as asked, 1 could not start, 2 a client failed,"
-                + " 124 timeout"});
+                + " 4 an output could not be written, 70 the simulator failed, 124 timeout"});
         c.put("reason", new String[] {"", "why the run stopped: max-simulation-time, clients-done, nobody-left, or"
                 + " what went wrong"});
         c.put("wall_seconds", new String[] {"s (wall clock)", "how long the run took"});

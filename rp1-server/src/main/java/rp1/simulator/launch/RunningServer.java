@@ -272,8 +272,15 @@ public final class RunningServer {
     private void shutDown(int status) {
         stopping.set(true);
         ServerLog log = parts.log;
+        String taskFailure = parts.simulation.getTaskFailure();
         String clientFailure = parts.launcher.firstFailure();
-        if (status == ExitStatus.OK && clientFailure != null) {
+        if (status == ExitStatus.OK && taskFailure != null) {
+            // The simulation went on past a defect of its own: its events may be wrong, and a sweep
+            // must not average them in as a run that went as asked.
+            log.important("The run ended (" + stopReason + ") after a simulation task failed");
+            status = ExitStatus.FATAL_ERROR;
+            stopReason = "a simulation task failed: " + taskFailure;
+        } else if (status == ExitStatus.OK && clientFailure != null) {
             // A client that failed did not stop the others, but the run did not go as asked: its
             // status says so whatever ended it (maxSimulationTime, the last robot leaving).
             log.important("The run ended (" + stopReason + ") after a loaded client failed");

@@ -66,7 +66,13 @@ public final class InputQueue implements Scheduler.Boundary {
                 if (l != null) {
                     l.applying(input, simTime);
                 }
-                input.apply(simTime);
+                try {
+                    input.apply(simTime);
+                } catch (RuntimeException e) {
+                    // One client's request that fails must not drop the rest of the batch (departures
+                    // included), nor end the thread applying it: it goes where a failing task goes.
+                    scheduler.failed(e);
+                }
             }
         } finally {
             unapplied.addAndGet(-batch.size());

@@ -88,9 +88,17 @@ public final class Scheduler {
         this.boundary = boundary;
     }
 
-    /** What happens when a task throws: by default the exception goes up to whoever runs the task. */
+    /**
+     * What happens when a task, an input or an idle action throws: by default the exception goes up to
+     * whoever runs it.
+     */
     public void setFailureHandler(Consumer<RuntimeException> handler) {
         this.failureHandler = handler;
+    }
+
+    /** Something run for the scheduler (an input applied at a boundary) threw {@code e}: handled as a failing task. */
+    public void failed(RuntimeException e) {
+        failureHandler.accept(e);
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -612,7 +620,11 @@ public final class Scheduler {
             lock.unlock();
         }
         if (idle != null) {
-            idle.run();
+            try {
+                idle.run();
+            } catch (RuntimeException ex) {
+                failureHandler.accept(ex);
+            }
             return Step.BOUNDARY;
         }
         if (e == null) {

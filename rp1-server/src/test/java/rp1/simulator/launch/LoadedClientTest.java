@@ -158,6 +158,22 @@ class LoadedClientTest {
     }
 
     @Test
+    void aSimulationTaskThatFailsMakesTheRunsStatus70ThoughTheSimulationGoesOn() throws Exception {
+        // A defect of the simulator's own: the run went on and said status 0, so a sweep counted it.
+        RunningServer server = TestServer.start(dir, "dlcEnabled=true", "dlcName=" + TirelessDlc.class.getName(),
+                "simulationSpeed=1", "maxSimulationTime=1");
+        server.getSimulation().getScheduler().schedule(0.5, 0, t -> {
+            throw new IllegalStateException("a defect");
+        });
+        assertEquals(OptionalInt.of(ExitStatus.FATAL_ERROR), server.awaitExit(20, TimeUnit.SECONDS), TestServer.log(dir));
+        assertTrue(server.getStopReason().startsWith("a simulation task failed: java.lang.IllegalStateException: a defect at "),
+                server.getStopReason());
+        String log = TestServer.log(dir);
+        assertTrue(log.contains("maxSimulationTime 1.0 s reached"), "the simulation went on: " + log);
+        assertTrue(log.contains("\tat "), "the whole stack, for the report: " + log);
+    }
+
+    @Test
     void aMissingClassOrOneThatIsNotAClientIsAClientFailure() {
         StartupException missing = assertThrows(StartupException.class,
                 () -> TestServer.start(dir, "dlcEnabled=true", "dlcName=no.such.Robot"));
