@@ -113,7 +113,7 @@ public class RsProtocol implements RsLogInterface {
     protected int clientKey;
     /** The number of the last message this side sent. */
     protected int sequence;
-    /** The sequence number of the last message received from the peer (logged, never checked). */
+    /** The sequence number of the last message received from the peer (kept, never checked: 0.60 did not either). */
     protected int serverSequence;
     /** Where this session logs; null for no log. */
     protected RsLogInterface logger;

@@ -288,8 +288,8 @@ public final class Batch {
     }
 
     /**
-     * Configuration by configuration, plan by plan, seed by seed, each in {@code runs/SEED-PLAN} (the
-     * plan's file name without .txt), or {@code runs/cN-SEED-PLAN} for configuration N when keys vary.
+     * Configuration by configuration, plan by plan, seed by seed, each in {@code runs/SEED-PLAN} (PLAN
+     * being the plan's {@link #stem}), or {@code runs/cN-SEED-PLAN} for configuration N when keys vary.
      */
     private static List<Run> runs(List<Map<String, String>> configurations, List<Long> seeds, Set<String> plans,
                                   Path runsDir) throws SweepException {

@@ -88,7 +88,7 @@ public final class SweepRun {
         try {
             report = run.run(started::complete, Double.POSITIVE_INFINITY);
         } catch (InterruptedException e) {
-            report = RunReport.failed("interrupted", ExitStatus.OK);
+            report = RunReport.failed("interrupted", Interruption.STATUS);
         } finally {
             started.complete(null);
         }
