@@ -1,5 +1,8 @@
 package rp1.rossum;
 
+import java.util.Map;
+import java.util.WeakHashMap;
+
 /**
  * One segment of a robot's path: from a start pose at {@link #time0}, for {@link #timeTotal}
  * seconds, until {@link #time1}. Poses are analytic (no integration): {@link #setTime} moves the
@@ -15,8 +18,13 @@ package rp1.rossum;
 public abstract class RsMotion extends RsComponent {
     private static final long serialVersionUID = 1L;
 
-    /** Only for {@link #getNewContinuityID()}, which 0.60 programs may call; the library never does. */
-    private static int lastContinuityID;
+    /**
+     * Only for {@link #getNewContinuityID()}, which 0.60 programs may call (the library never does): the
+     * last number given, per class loader of the caller. One process is one run in 0.60; here a sweep
+     * runs many in one process, each robot that calls it with classes loaded for that run alone.
+     */
+    private static final Map<ClassLoader, int[]> LAST_CONTINUITY_IDS = new WeakHashMap<>();
+    private static final StackWalker CALLERS = StackWalker.getInstance(StackWalker.Option.RETAIN_CLASS_REFERENCE);
 
     /** Start time (simulation seconds). */
     public double time0;
@@ -214,11 +222,17 @@ public abstract class RsMotion extends RsComponent {
     }
 
     /**
-     * A new number from a process-wide counter, as in RP1 0.60. Kept so that 0.60 programs compile;
-     * motions no longer take their ids from it (see the class comment).
+     * A new number from a counter, as in RP1 0.60: 1, 2, 3, ... Kept so that 0.60 programs compile;
+     * motions no longer take their ids from it (see the class comment). 0.60's counter was the
+     * process's; this one is that of the caller's class loader, which in a program of its own is the
+     * same thing, and in a sweep is the run's (a robot that calls it gets its classes loaded for each
+     * run), so that a run's numbers do not depend on the runs before it.
      */
-    public static synchronized int getNewContinuityID() {
-        return ++lastContinuityID;
+    public static int getNewContinuityID() {
+        ClassLoader loader = CALLERS.getCallerClass().getClassLoader();
+        synchronized (LAST_CONTINUITY_IDS) {
+            return ++LAST_CONTINUITY_IDS.computeIfAbsent(loader, l -> new int[1])[0];
+        }
     }
 
     /** This motion's own continuity id. */

@@ -25,7 +25,8 @@ import java.util.stream.Stream;
  * string, or is one of the fields the Java compiler makes for enums (the constants of an enum whose
  * own fields are such values, and the array of them) and for switches on enums. Anything else (a
  * final array, list or random source included) counts as state. A class whose file cannot be read
- * counts as state too.
+ * counts as state too, and so does one that calls {@code RsMotion.getNewContinuityID()}, whose counter
+ * is the caller's class loader's.
  */
 final class StaticState {
     private static final int ACC_STATIC = 0x0008;
@@ -137,6 +138,12 @@ final class StaticState {
         String self = utf8[classNameIndex[in.readUnsignedShort()]];
         in.readUnsignedShort();
         in.skipNBytes(2L * in.readUnsignedShort());
+        for (String u : utf8) {
+            if ("getNewContinuityID".equals(u)) {
+                // 0.60's counter of RsMotion, counted per class loader: shared classes would share it.
+                return Optional.of(self.replace('/', '.') + ", which calls RsMotion.getNewContinuityID()");
+            }
+        }
         boolean isEnum = (access & ACC_ENUM) != 0;
         String selfType = "L" + self + ";";
         int fields = in.readUnsignedShort();

@@ -153,6 +153,20 @@ class ExperimentTest {
     }
 
     @Test
+    void theContinuityCounterOf060StartsAgainInEveryRun() throws Exception {
+        // RsMotion.getNewContinuityID() was one counter for the process: seeds 1 to 4 run one after
+        // another read 1, 2, 3 and 4, and seed 3 alone read 1.
+        Path p = properties("dlcName=" + NumberingDlc.class.getName());
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "1-4", "--jobs", "1", "--out", dir.resolve("out").toString()),
+                sweeps.err());
+        List<List<String>> rows = table("out", "results.csv");
+        int first = rows.get(0).indexOf("result.first");
+        for (List<String> row : rows.subList(1, rows.size())) {
+            assertEquals("1", row.get(first), row.toString());
+        }
+    }
+
+    @Test
     void resumeRefusesAnotherGrid() throws Exception {
         Path p = properties();
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.speed=0.1", "--out",

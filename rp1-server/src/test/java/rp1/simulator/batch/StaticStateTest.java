@@ -127,6 +127,19 @@ class StaticStateTest {
         assertEquals(Optional.of(name(Dice.class, "RANDOM")), of(Dice.class), "a random source moves on");
     }
 
+    /** No static field, but 0.60's continuity counter, which is its class loader's. */
+    static final class Numbering {
+        int next() {
+            return rp1.rossum.RsMotion.getNewContinuityID();
+        }
+    }
+
+    @Test
+    void aClassThatCallsTheContinuityCounterKeepsStateThere() throws IOException {
+        assertEquals(Optional.of(Numbering.class.getName() + ", which calls RsMotion.getNewContinuityID()"),
+                of(Numbering.class));
+    }
+
     @Test
     void enumsKeepStateOnlyInFieldsOfTheirConstantsThatCanChange() throws IOException {
         assertEquals(Optional.empty(), of(Plain.class));
