@@ -227,7 +227,7 @@ public final class Sweep {
                 .toList();
         List<String> unread = new ArrayList<>();
         for (String key : varied) {
-            String name = key.startsWith(ServerConfig.PARAMETER_PREFIX) ? key.substring(ServerConfig.PARAMETER_PREFIX.length()) : null;
+            String name = ServerConfig.isParameter(key) ? key.substring(ServerConfig.PARAMETER_PREFIX.length()) : null;
             if (name != null && !known.isEmpty() && known.stream().noneMatch(r -> r.parametersAsked().contains(name))) {
                 unread.add(key);
             }

@@ -250,8 +250,11 @@ public abstract class RsMotion extends RsComponent {
         return stopTimeForContact(contactTime);
     }
 
-    /** max(0, floor(1000 t - 0.1) / 1000): the stop time for a contact at t (behavior.md section 6.2). */
-    static double stopTimeForContact(double contactTime) {
+    /**
+     * max(0, floor(1000 t - 0.1) / 1000): the stop time for a contact t seconds into a motion
+     * (behavior.md section 6.2), against a wall or, in the server, another robot.
+     */
+    public static double stopTimeForContact(double contactTime) {
         return Math.max(0.0, Math.floor(1000.0 * contactTime - 0.1) / 1000.0);
     }
 

@@ -477,11 +477,14 @@ public final class Batch {
         }
     }
 
-    /** The trails a run left in its folder; none if it left none that can be read. */
+    /** The trails a run left in its folder; none if it left none, or none that can be read (told on standard error). */
     static List<Trail> trails(Run run) {
         try {
             return TrailFile.read(run.dir());
         } catch (IOException e) {
+            // Not a reason to lose the run's row, but summary.png will lack its trails: say so.
+            System.err.println("rp1.Sweep: " + run.dir().resolve(TrailFile.FILE) + ": " + e.getMessage()
+                    + "; the run's trails are left out of summary.png");
             return List.of();
         }
     }

@@ -315,6 +315,7 @@ public final class ClientSession implements EventSink {
     }
 
     void plan(double now) {
+        // Stamped 0.0 whenever it is sent, as RP1 0.60 stamped it (behavior.md section 12).
         scheduler.scheduleImmediate(now, t -> send(new RsPlanEvent(0.0, world.getPlan())));
     }
 

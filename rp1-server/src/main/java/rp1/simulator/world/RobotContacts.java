@@ -292,7 +292,7 @@ final class RobotContacts {
         if (!r.isMoving() || m == null) {
             return Double.NaN;
         }
-        double stopAt = Math.max(now, m.time0 + Math.max(0.0, Math.floor(1000.0 * (contact - m.time0) - 0.1) / 1000.0));
+        double stopAt = Math.max(now, m.time0 + RsMotion.stopTimeForContact(contact - m.time0));
         return stopAt >= m.time1 ? Double.NaN : stopAt;
     }
 
