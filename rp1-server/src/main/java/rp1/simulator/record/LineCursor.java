@@ -66,8 +66,16 @@ final class LineCursor {
         return (int) v;
     }
 
+    /**
+     * A finite number: what a recording holds came from the wire, which refuses NaN and infinities, or
+     * from the view; a recording with one was edited, and would replay as a run that never was.
+     */
     double real(String what) throws RecordingException {
-        return parsed(what, "a number", Double::parseDouble);
+        double v = parsed(what, "a number", Double::parseDouble);
+        if (!Double.isFinite(v)) {
+            throw error(what + ": a finite number was expected, found " + v);
+        }
+        return v;
     }
 
     /** The next word as {@code parse} reads it; {@code kind} says what it should have been. */

@@ -39,7 +39,7 @@ class InputTextTest {
                 new Request.Subscription(6, 12, true),
                 new Request.SensorStatus(42),
                 new Request.Motion(new RsMotionRequest(0.1 + 0.2, -1.0e-300, 3.0)),
-                new Request.ActuatorControl(5, 1, new String[] {"left", null}, new double[] {0.3, Double.NaN}),
+                new Request.ActuatorControl(5, 1, new String[] {"left", null}, new double[] {0.3, -Double.MAX_VALUE}),
                 new Request.Halt(),
                 new Request.Position(),
                 new Request.Placement("home \"quoted\" \\ é\n\u0001"),

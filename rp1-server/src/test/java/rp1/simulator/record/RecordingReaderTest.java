@@ -111,6 +111,17 @@ class RecordingReaderTest {
     }
 
     @Test
+    void aNumberThatIsNotFiniteIsRefusedAtItsLine() {
+        // Nothing on the wire can be NaN or infinite: such a recording was edited, and replayed to the end
+        // only to say it differed from the recorded run.
+        RecordingException e = assertThrows(RecordingException.class,
+                () -> parse(replaced(10, "input 0 0.0 1 motion 0.5 NaN 2.0")));
+        assertEquals("run.rec:10: rotational velocity: a finite number was expected, found NaN", e.getMessage());
+        assertThrows(RecordingException.class, () -> parse(replaced(10, "input 0 0.0 1 heartbeat Infinity")));
+        assertThrows(RecordingException.class, () -> parse(replaced(10, "input 0 0.0 1 heartbeat 1e999")));
+    }
+
+    @Test
     void inputsOutOfOrderAreRefused() {
         String[] lines = replaced(10, "input 0 0.0 1 halt");
         lines[8] = "input 2 0.5 1 position";
