@@ -81,10 +81,14 @@ class AllClientsBudgetTest {
         out.writeInt(1);
         out.writeInt(3);
         out.writeInt(60000);
-        for (int i = 0; i < bytes / 8; i++) {
-            out.writeDouble(i);
+        try {
+            for (int i = 0; i < bytes / 8; i++) {
+                out.writeDouble(i);
+            }
+            out.flush();
+        } catch (IOException hungUp) {
+            // The server may disconnect a client before it has sent all: that is what is tested.
         }
-        out.flush();
     }
 
     private String awaitLine(String part) throws InterruptedException {
