@@ -33,7 +33,8 @@ import rp1.web.SweepIndex;
  * a headless world of its own; DIR gets {@code results.csv}, one row per run and robot (added as each
  * run ends), {@code summary.csv}, statistics per configuration, {@code results.md}, the columns'
  * units, {@code summary.png}, box plots and trails per configuration, {@code runs/.../} with each
- * run's recording, event log and end picture, and {@code sweep.ini}, what the sweep was, for
+ * run's recording and event log (and end picture with {@code --pictures}), and {@code sweep.ini},
+ * what the sweep was, for
  * {@code --resume}, and {@code index.html}, the summary and a sortable table of the runs, each linked
  * to its replay page (written with {@code --html}). Exit status 0 when every run ended with
  * status 0, 2 when one did not (its row says why), 1 when the sweep could not start, 130 when it was

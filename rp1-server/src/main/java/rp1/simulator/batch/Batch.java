@@ -258,8 +258,10 @@ public final class Batch {
             throws SweepException {
         List<String> differences = SweepSpec.read(out).differences(spec);
         if (!differences.isEmpty()) {
+            boolean format = differences.get(0).startsWith(SweepSpec.FORMAT_NAME);
             throw new SweepException("--resume: " + out + " holds another sweep (" + SweepSpec.FILE + "): "
-                    + String.join("; ", differences) + ". Resume it with its own options, or give another --out");
+                    + String.join("; ", differences) + (format ? ". An earlier version of RP1 began it and this one"
+                    + " cannot go on with it: give another --out" : ". Resume it with its own options, or give another --out"));
         }
         List<ResultsCsv.Kept> rows;
         try {

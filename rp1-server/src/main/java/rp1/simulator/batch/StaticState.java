@@ -141,7 +141,7 @@ final class StaticState {
         for (String u : utf8) {
             if ("getNewContinuityID".equals(u)) {
                 // 0.60's counter of RsMotion, counted per class loader: shared classes would share it.
-                return Optional.of(self.replace('/', '.') + ", which calls RsMotion.getNewContinuityID()");
+                return Optional.of("RsMotion's continuity counter (called by " + self.replace('/', '.') + ")");
             }
         }
         boolean isEnum = (access & ACC_ENUM) != 0;

@@ -42,8 +42,8 @@ public final class SweepOptions {
             "  --out DIR      where results.csv, summary.png and runs/SEED-PLAN/ go (created if need be)",
             "  -cp PATH       where the robot's classes (dlcName) are, besides the simulator's own (also --classpath)",
             "  --resume       go on with the sweep in DIR that was interrupted: run only the runs it has no",
-            "                 results for, or that could not be started or a cluster lost (the other options",
-            "                 must be those it was started with)");
+            "                 results for, or that could not be started or a cluster lost (the options that",
+            "                 decide the runs, and the robot's code, must be those it was started with)");
 
     /**
      * What the command line may hold, for a sweep started as {@code command} ({@code rp1 sweep},

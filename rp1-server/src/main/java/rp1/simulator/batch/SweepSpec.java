@@ -28,6 +28,8 @@ final class SweepSpec {
     /** The file in the output folder. */
     static final String FILE = "sweep.ini";
     private static final String FORMAT = "rp1-sweep";
+    /** How {@link #differences} names a difference of format (an earlier version of RP1 wrote the file). */
+    static final String FORMAT_NAME = "the format of " + FILE;
     /** What each key is called in a message, in the order they are written. */
     private static final Map<String, String> NAMES = names();
 
@@ -39,7 +41,7 @@ final class SweepSpec {
 
     private static Map<String, String> names() {
         Map<String, String> names = new LinkedHashMap<>();
-        names.put(FORMAT, "the format of " + FILE);
+        names.put(FORMAT, FORMAT_NAME);
         names.put("properties.sha256", "the properties' text (-p)");
         names.put("plans", "the floor plans (--plans)");
         names.put("plans.sha256", "the floor plans' text");

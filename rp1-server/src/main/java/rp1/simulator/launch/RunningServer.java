@@ -236,7 +236,10 @@ public final class RunningServer {
         t.start();
     }
 
-    /** Stops the server (status 0 unless it was already stopping) and waits until it has. */
+    /**
+     * Stops the server and waits until it has; returns its status: 0, unless it was already stopping
+     * with another, or a loaded client (2) or a simulation task (70) failed during the run.
+     */
     public int stop() throws InterruptedException {
         requestStop(ExitStatus.OK);
         return awaitExit();
@@ -256,8 +259,9 @@ public final class RunningServer {
     /**
      * Why the server stopped (or is stopping): {@code max-simulation-time}, {@code clients-done},
      * {@code nobody-left} (a max-speed run whose clients and robots have all left),
-     * {@code client failed: WHAT}, or {@code stopped} (asked to: the window, a signal, a caller);
-     * {@code running} before that.
+     * {@code client failed: WHAT} (which replaces the others when a loaded client failed during the
+     * run), {@code a simulation task failed: WHAT}, {@code the simulation failed: ERROR}, or
+     * {@code stopped} (asked to: the window, a signal, a caller); {@code running} before that.
      */
     public String getStopReason() {
         return stopReason;

@@ -31,7 +31,7 @@ public interface ViewHook {
         public final ServerConfig config;
         /** The server's log. */
         public final RsLogInterface log;
-        /** Stops the server with status 0 (the view's File / Exit and window close). */
+        /** Stops the server as asked (the view's File / Exit and window close): status 0 unless the run failed. */
         public final Runnable exit;
 
         /** What the server hands to its view. */

@@ -179,6 +179,21 @@ class ExperimentTest {
     }
 
     @Test
+    void resumeOfASweepAnEarlierVersionBeganSaysItCannotGoOn() throws Exception {
+        Path p = properties();
+        String[] args = {"-p", p.toString(), "--seeds", "1", "--out", dir.resolve("out").toString()};
+        assertEquals(0, sweep(args), sweeps.err());
+        Path spec = dir.resolve("out").resolve(SweepSpec.FILE);
+        Files.writeString(spec, Files.readString(spec).replace("rp1-sweep=3", "rp1-sweep=2"));
+        sweeps.reset();
+        String[] resume = Arrays.copyOf(args, args.length + 1);
+        resume[args.length] = "--resume";
+        assertEquals(1, sweep(resume));
+        assertTrue(sweeps.err().contains("the format of sweep.ini: 2 there, 3 here. An earlier version of RP1 began it"
+                + " and this one cannot go on with it: give another --out"), sweeps.err());
+    }
+
+    @Test
     void resumeRefusesARobotThatChangedSince() throws Exception {
         // Rows of two versions of a robot averaged together would answer no question.
         Path p = properties();

@@ -136,7 +136,7 @@ class StaticStateTest {
 
     @Test
     void aClassThatCallsTheContinuityCounterKeepsStateThere() throws IOException {
-        assertEquals(Optional.of(Numbering.class.getName() + ", which calls RsMotion.getNewContinuityID()"),
+        assertEquals(Optional.of("RsMotion's continuity counter (called by " + Numbering.class.getName() + ")"),
                 of(Numbering.class));
     }
 
