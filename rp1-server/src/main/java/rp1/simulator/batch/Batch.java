@@ -1,10 +1,8 @@
 package rp1.simulator.batch;
 
 import java.io.Closeable;
-import java.io.File;
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
@@ -24,7 +22,6 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
-import java.util.regex.Pattern;
 
 import rp1.io.IoFailures;
 import rp1.planparser.RsParsingException;
@@ -53,17 +50,13 @@ import rp1.simulator.launch.StartupException;
  * then runs only the others, if the folder's {@code sweep.ini} says it holds the same sweep.
  */
 public final class Batch {
-    /** Each run's recording, event log and end picture, in its folder (docs/guide.md names them). */
-    private static final String RECORDING = "recording.txt";
-    private static final String EVENTS = "events.txt";
-    private static final String PICTURE = "end.png";
     /** The results in the output folder. */
     private static final String RESULTS = "results.csv";
 
     private final SweepOptions options;
     private final Path out;
-    /** What of the user's properties every run's begin with: without snapshotFileName unless --pictures. */
-    private final String runPropertiesText;
+    /** Writes each run's folder. */
+    private final RunFolder folders;
     private final Map<String, RsPlan> plans;
     private final List<Run> runs;
     private final SweepSpec spec;
@@ -102,8 +95,7 @@ public final class Batch {
                   SweepSpec spec, List<Outcome> kept, List<Path> classPath, RunEngine engine) {
         this.options = options;
         this.out = out;
-        // An empty value is refused as a typo, so "no picture" is the user's snapshotFileName left out.
-        this.runPropertiesText = options.pictures ? propertiesText : withoutKey(propertiesText, "snapshotFileName");
+        this.folders = new RunFolder(propertiesText, options.client, options.pictures);
         this.plans = plans;
         this.runs = runs;
         this.spec = spec;
@@ -190,7 +182,7 @@ public final class Batch {
         p.putAll(table);
         p.putAll(values);
         if (client != null) {
-            p.putAll(CLIENT_KEYS);
+            p.putAll(RunFolder.CLIENT_KEYS);
         }
         try {
             return ServerConfig.from(p, location, plan);
@@ -199,18 +191,7 @@ public final class Batch {
         }
     }
 
-    /** The keys a {@code --client} sets: its program is the robot, over the network (in this order in run.ini). */
-    private static final Map<String, String> CLIENT_KEYS = clientKeys();
-
-    private static Map<String, String> clientKeys() {
-        Map<String, String> keys = new LinkedHashMap<>();
-        keys.put("enableNetworkClients", "true");
-        keys.put("dlcEnabled", "false");
-        keys.put("exitWhenClientsDone", "false");
-        return Collections.unmodifiableMap(keys);
-    }
-
-    private static String describe(Map<String, String> configuration) {
+    static String describe(Map<String, String> configuration) {
         StringBuilder b = new StringBuilder();
         configuration.forEach((k, v) -> b.append(' ').append(k).append('=').append(v));
         return b.toString();
@@ -274,7 +255,7 @@ public final class Batch {
             for (ResultsCsv.Kept k : rows) {
                 if (k.seed() == run.seed() && k.plan().equals(run.plan()) && k.configuration().equals(run.configuration())) {
                     if (k.report().carriedOut()) {
-                        kept.add(new Outcome(run, k.report(), k.wallSeconds(), trails(run)));
+                        kept.add(new Outcome(run, k.report(), k.wallSeconds(), RunFolder.trails(run)));
                     }
                     break;
                 }
@@ -451,7 +432,7 @@ public final class Batch {
         long start = System.nanoTime();
         RunEngine.Ran ran;
         try {
-            prepareFolder(run);
+            folders.prepare(run);
             ran = engine.run(run);
         } catch (IOException e) {
             ran = new RunEngine.Ran(RunReport.failed(RunReport.NOT_STARTED + e.getMessage(),
@@ -463,80 +444,5 @@ public final class Batch {
         }
         double wall = (System.nanoTime() - start) * 1e-9;
         return new Outcome(run, report, wall, ran.trails());
-    }
-
-    /** The run's folder with its properties (and --client command), and nothing an earlier run left. */
-    private void prepareFolder(Run run) throws IOException {
-        Files.createDirectories(run.dir());
-        Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
-        Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
-        Files.write(run.dir().resolve(SweepRun.PROPERTIES), properties(run).getBytes(StandardCharsets.UTF_8));
-        Path command = run.dir().resolve(SweepRun.CLIENT_COMMAND);
-        if (options.client != null) {
-            Files.write(command, (options.client + "\n").getBytes(StandardCharsets.UTF_8));
-        } else {
-            Files.deleteIfExists(command);
-        }
-    }
-
-    /** The trails a run left in its folder; none if it left none, or none that can be read (told on standard error). */
-    static List<Trail> trails(Run run) {
-        try {
-            return TrailFile.read(run.dir());
-        } catch (IOException e) {
-            // Not a reason to lose the run's row, but summary.png will lack its trails: say so.
-            System.err.println("rp1.Sweep: " + run.dir().resolve(TrailFile.FILE) + ": " + e.getMessage()
-                    + "; the run's trails are left out of summary.png");
-            return List.of();
-        }
-    }
-
-    /**
-     * The user's properties with the run's own keys after them (later keys win): its configuration,
-     * a {@code --client}'s keys, its seed and plan, no window and no live view, and its log, recording, event log and
-     * (with {@code --pictures}) picture in its folder; without, none, since drawing and encoding it
-     * would cost a bumper run three times what the run itself costs (a replay draws one when asked).
-     */
-    private String properties(Run run) {
-        Path d = run.dir().toAbsolutePath();
-        // Escaped as a properties file escapes them: a varied value a\b, or a plan's Windows path, is
-        // read back as written.
-        Map<String, String> own = new LinkedHashMap<>(run.configuration());
-        if (options.client != null) {
-            own.putAll(CLIENT_KEYS);
-        }
-        own.put("randomSeed", Long.toString(run.seed()));
-        own.put("floorPlanFileName", run.plan());
-        own.put("enableGUI", "false");
-        // Runs go side by side: a live view on one port would let only the first of them start.
-        own.put("viewPort", "0");
-        own.put("logToFile", "true");
-        own.put("logFileName", d.resolve(SweepRun.LOG).toString());
-        own.put("logToSystemOut", "false");
-        own.put("recordFileName", d.resolve(RECORDING).toString());
-        own.put("eventLogFileName", d.resolve(EVENTS).toString());
-        if (options.pictures) {
-            own.put("snapshotFileName", d.resolve(PICTURE).toString());
-        }
-        own.put("snapshotInterval", "0");
-        return runPropertiesText + "\n\n# rp1.Sweep: seed " + run.seed() + " on " + run.plan() + describe(run.configuration())
-                + "\n" + PropertiesText.of(own);
-    }
-
-    /** The properties text without the lines that set {@code key} (and the lines such a line continues onto). */
-    static String withoutKey(String text, String key) {
-        StringBuilder kept = new StringBuilder();
-        boolean dropping = false;
-        Pattern setting = Pattern.compile(Pattern.quote(key) + "\\s*[=:\\s].*|" + Pattern.quote(key));
-        for (String line : text.split("\n", -1)) {
-            String t = line.stripLeading();
-            boolean continues = line.endsWith("\\");
-            if (dropping || setting.matcher(t).matches()) {
-                dropping = continues;
-                continue;
-            }
-            kept.append(line).append('\n');
-        }
-        return kept.toString();
     }
 }

@@ -83,9 +83,9 @@ final class ProcessRuns implements RunEngine {
         if (!ended) {
             stop(p);
             return new Ran(RunReport.failed(String.format(Locale.ROOT, "timeout: still running after %.0f s of wall time",
-                    timeoutSeconds), RunReport.TIMED_OUT), Batch.trails(run));
+                    timeoutSeconds), RunReport.TIMED_OUT), RunFolder.trails(run));
         }
-        return new Ran(report(run.dir(), p.exitValue()), Batch.trails(run));
+        return new Ran(report(run.dir(), p.exitValue()), RunFolder.trails(run));
     }
 
     /**

@@ -9,11 +9,11 @@ class RunPropertiesTest {
     @Test
     void aKeyTheSweepLeavesOutIsRemovedWithItsContinuationLines() {
         String text = "dlcEnabled=true\n  snapshotFileName = end.png\nsnapshotFileName: a\\\n   b.png\nsnapshotInterval=5\n";
-        assertEquals("dlcEnabled=true\nsnapshotInterval=5\n\n", Batch.withoutKey(text, "snapshotFileName"));
+        assertEquals("dlcEnabled=true\nsnapshotInterval=5\n\n", RunFolder.withoutKey(text, "snapshotFileName"));
     }
 
     @Test
     void aKeyThatOnlyBeginsLikeTheOneLeftOutIsKept() {
-        assertEquals("snapshotFileNames=x\n", Batch.withoutKey("snapshotFileNames=x", "snapshotFileName"));
+        assertEquals("snapshotFileNames=x\n", RunFolder.withoutKey("snapshotFileNames=x", "snapshotFileName"));
     }
 }
