@@ -2,6 +2,7 @@ package rp1.simulator;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -105,6 +106,21 @@ public final class Simulation {
         StringWriter trace = new StringWriter();
         e.printStackTrace(new PrintWriter(trace));
         log.logIt("X", "A simulation task failed; the simulation goes on, its run failed: " + trace.toString().stripTrailing());
+    }
+
+    /**
+     * The sessions that have kept the interlock waiting for more than {@code seconds} of wall time
+     * (none without the interlock).
+     */
+    public List<ClientSession> overdueSessions(double seconds) {
+        if (interlock == null) {
+            return List.of();
+        }
+        List<ClientSession> late = new ArrayList<>();
+        for (Object client : interlock.overdue((long) (seconds * 1e9))) {
+            late.add((ClientSession) client);
+        }
+        return late;
     }
 
     /** The first failure of a task of this simulation ({@link #taskFailed}), or null if none failed. */

@@ -43,7 +43,7 @@ public final class ServerConfig {
             "enableNetworkClients", "simulationSpeed", "animationFrameRate", "modelingFrameRate", "dlcEnabled",
             "dlcName", "dlcSetIO", "dlcSetLog", "dlcSetLogger", "interlockEnabled", "enableInterlock",
             // this implementation's
-            "bindAddress", "randomSeed", "exitWhenClientsDone", "maxSimulationTime", "connectTimeout",
+            "bindAddress", "randomSeed", "exitWhenClientsDone", "maxSimulationTime", "connectTimeout", "interlockTimeout",
             "clientQueueLimit", "snapshotFileName", "snapshotInterval", "robotsInteract", "waitForClients",
             "dlcDelivery", "recordFileName", "eventLogFileName",
             "clientOutputBudget", "clientTimeoutBudget", "clientSubscriptionBudget", "clientMessageBudget",
@@ -106,6 +106,11 @@ public final class ServerConfig {
     public final double maxSimulationTime;
     /** Seconds a new network connection may take to send CONNECT. */
     public final double connectTimeout;
+    /**
+     * Wall seconds a network client may keep the interlock waiting before it is disconnected; 0 (the
+     * default): as long as it takes, as in RP1 0.60 (a robot held at a debugger's breakpoint).
+     */
+    public final double interlockTimeout;
     /** Events that may wait for a slow client before it is disconnected. */
     public final int clientQueueLimit;
     /**
@@ -181,6 +186,7 @@ public final class ServerConfig {
         exitWhenClientsDone = r.bool(false, "exitWhenClientsDone");
         maxSimulationTime = r.real("maxSimulationTime", Double.POSITIVE_INFINITY, 0.0, Double.POSITIVE_INFINITY);
         connectTimeout = r.real("connectTimeout", 10.0, 0.001, 86400.0);
+        interlockTimeout = r.real("interlockTimeout", 0.0, 0.0, 86400.0);
         clientQueueLimit = r.integer("clientQueueLimit", 10000, 16, Integer.MAX_VALUE);
         ClientBudgets budgets = ClientBudgets.DEFAULTS;
         clientBudgets = new ClientBudgets(

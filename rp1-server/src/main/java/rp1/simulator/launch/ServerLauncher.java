@@ -205,7 +205,8 @@ public final class ServerLauncher {
         WarmUp.run(parse(config, planText));
         try {
             ClientListener listener = ClientListener.bind(config.bindAddress, port, simulation, registry, log,
-                    new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit, config.clientBudgets));
+                    new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit, config.clientBudgets)
+                            .withInterlockTimeout(config.interlockTimeout));
             log.log("Socket ready: " + config.bindAddress + ":" + listener.getPort());
             return listener;
         } catch (IOException e) {

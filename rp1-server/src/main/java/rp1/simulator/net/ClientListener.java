@@ -16,12 +16,15 @@ import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.Iterator;
 import java.util.List;
+import java.util.Map;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
 import rp1.simulator.session.ClientBudgets;
+import rp1.simulator.session.ClientSession;
 
 /**
  * The network clients (docs/behavior.md section 3.3, docs/protocol.md section 4): one thread, the
@@ -80,6 +83,10 @@ public final class ClientListener {
     private long incomplete;
     /** What the events waiting for all the clients may hold. */
     private final SharedBudget allOutput;
+    /** Seconds a client may keep the interlock waiting (0: as long as it takes). */
+    private final double interlockTimeout;
+    /** The network's clients by their sessions, to disconnect one the interlock waits for too long. */
+    private final Map<ClientSession, ClientConnection> sessions = new HashMap<>();
 
     private ClientListener(ServerSocketChannel serverSocket, Selector selector, Simulation simulation,
                            ClientRegistry clients, RsLogInterface log, Settings settings) {
@@ -94,6 +101,7 @@ public final class ClientListener {
         this.acceptor = settings.acceptor;
         this.allIncomplete = settings.allClients;
         this.allOutput = new SharedBudget(settings.allClients);
+        this.interlockTimeout = settings.interlockTimeout;
     }
 
     /** What a listener needs besides its address. */
@@ -107,6 +115,8 @@ public final class ClientListener {
          * events they do not read: a quarter of the JVM's heap each, unless a test says otherwise.
          */
         final long allClients;
+        /** Wall seconds a client may keep the interlock waiting before it is disconnected; 0: as long as it takes. */
+        final double interlockTimeout;
 
         /**
          * @param connectTimeout seconds a new connection may take to send CONNECT
@@ -122,20 +132,30 @@ public final class ClientListener {
          * @param budgets        what each client may make the server hold
          */
         public Settings(double connectTimeout, int queueLimit, ClientBudgets budgets) {
-            this(connectTimeout, queueLimit, budgets, ServerSocketChannel::accept, Runtime.getRuntime().maxMemory() / 4);
+            this(connectTimeout, queueLimit, budgets, ServerSocketChannel::accept, Runtime.getRuntime().maxMemory() / 4, 0);
         }
 
-        private Settings(double connectTimeout, int queueLimit, ClientBudgets budgets, Acceptor acceptor, long allClients) {
+        private Settings(double connectTimeout, int queueLimit, ClientBudgets budgets, Acceptor acceptor, long allClients,
+                         double interlockTimeout) {
             this.connectTimeout = connectTimeout;
             this.queueLimit = queueLimit;
             this.budgets = budgets;
             this.acceptor = acceptor;
             this.allClients = allClients;
+            this.interlockTimeout = interlockTimeout;
         }
 
         /** The same settings, taking connections with {@code a} (tests make accepting fail). */
         Settings withAcceptor(Acceptor a) {
-            return new Settings(connectTimeout, queueLimit, budgets, a, allClients);
+            return new Settings(connectTimeout, queueLimit, budgets, a, allClients, interlockTimeout);
+        }
+
+        /**
+         * The same settings, disconnecting a client that keeps the interlock waiting for more than
+         * {@code seconds} of wall time ({@code interlockTimeout}; 0: as long as it takes).
+         */
+        public Settings withInterlockTimeout(double seconds) {
+            return new Settings(connectTimeout, queueLimit, budgets, acceptor, allClients, seconds);
         }
 
         /**
@@ -143,7 +163,7 @@ public final class ClientListener {
          * messages and again in events waiting for them (by default a quarter of the JVM's heap each).
          */
         public Settings withAllClients(long bytes) {
-            return new Settings(connectTimeout, queueLimit, budgets, acceptor, bytes);
+            return new Settings(connectTimeout, queueLimit, budgets, acceptor, bytes, interlockTimeout);
         }
     }
 
@@ -263,7 +283,25 @@ public final class ClientListener {
             }
         }
         expireHandshakes();
+        disconnectOverdue();
         simulation.pump();
+    }
+
+    /**
+     * With an {@code interlockTimeout}, a client that has kept simulated time waiting longer is
+     * disconnected, so that one client that stopped answering cannot stop the world for the others.
+     */
+    private void disconnectOverdue() {
+        sessions.entrySet().removeIf(e -> e.getValue().hasEnded());
+        if (interlockTimeout <= 0) {
+            return;
+        }
+        for (ClientSession late : simulation.overdueSessions(interlockTimeout)) {
+            ClientConnection c = sessions.get(late);
+            if (c != null && !c.hasEnded()) {
+                c.close("it did not acknowledge an event within " + interlockTimeout + " s (interlockTimeout)");
+            }
+        }
     }
 
     private void acceptAll() {
@@ -330,7 +368,7 @@ public final class ClientListener {
             OutboundQueue out = OutboundQueue.start(new ChannelTransport(channel), queueLimit, budgets.output, allOutput,
                     "writer " + description, c::close);
             c.setInputOutputStreams(null, out);
-            simulation.attach(c, description, Simulation.Link.SHARED_READER);
+            sessions.put(simulation.attach(c, description, Simulation.Link.SHARED_READER), c);
             Peer p = new Peer(channel, c, System.nanoTime() + connectTimeoutNanos);
             channel.register(selector, SelectionKey.OP_READ, p);
             introducing.add(p);

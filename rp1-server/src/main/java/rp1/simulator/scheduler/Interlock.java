@@ -1,8 +1,10 @@
 package rp1.simulator.scheduler;
 
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
@@ -29,6 +31,8 @@ public final class Interlock {
     private final Scheduler scheduler;
     /** Each client's newest number not yet acknowledged. */
     private final Map<Object, Integer> pending = new HashMap<>();
+    /** Since when (System.nanoTime) each client with a number pending has kept the clock waiting. */
+    private final Map<Object, Long> waitingSince = new HashMap<>();
     /** The number {@link #sending} gave the event a client's connection is about to write. */
     private final Map<Object, Integer> numbered = new HashMap<>();
     /** Clients whose connection has ended. */
@@ -90,9 +94,16 @@ public final class Interlock {
             return false;
         }
         scheduler.stopClock();
-        pending.put(client, counter);
+        owe(client, counter);
         numbered.put(client, counter);
         return true;
+    }
+
+    /** {@code client} owes the acknowledgement of {@code number}; it began to keep the clock waiting if it owed none. */
+    private void owe(Object client, int number) {
+        if (pending.put(client, number) == null) {
+            waitingSince.put(client, System.nanoTime());
+        }
     }
 
     /** The number of the event {@code client}'s connection writes: the one {@link #sending} gave it, or a new one. */
@@ -105,7 +116,7 @@ public final class Interlock {
     public synchronized int open(Object client) {
         scheduler.stopClock();
         counter++;
-        pending.put(client, counter);
+        owe(client, counter);
         return counter;
     }
 
@@ -121,6 +132,7 @@ public final class Interlock {
             return false;
         }
         pending.remove(client);
+        waitingSince.remove(client);
         return restartIfNonePending();
     }
 
@@ -136,6 +148,7 @@ public final class Interlock {
     public synchronized boolean leave(Object client, Runnable departure) {
         ended.add(client);
         numbered.remove(client);
+        waitingSince.remove(client);
         if (pending.remove(client) != null) {
             departure.run();
             return restartIfNonePending();
@@ -157,8 +170,24 @@ public final class Interlock {
     public synchronized void forget(Object client) {
         ended.remove(client);
         pending.remove(client);
+        waitingSince.remove(client);
         numbered.remove(client);
         deferred.remove(client);
+    }
+
+    /**
+     * The clients that have kept the clock waiting for more than {@code nanos} of wall time (an
+     * acknowledgement they owe since then), in no order. Any thread.
+     */
+    public synchronized List<Object> overdue(long nanos) {
+        long now = System.nanoTime();
+        List<Object> late = new ArrayList<>();
+        waitingSince.forEach((client, since) -> {
+            if (now - since > nanos) {
+                late.add(client);
+            }
+        });
+        return late;
     }
 
     private boolean restartIfNonePending() {
