@@ -77,7 +77,7 @@ class SparkSweepTest {
 
     @Test
     void aTwoWorkerClusterGivesTheRowsOfTheSweepsOwnEngineAndBringsTheRunsFilesBack() throws Exception {
-        Path out = sweep(cluster.masterUrl(), "1-16", "cluster");
+        Path out = sweep(cluster.masterUrl(), "1-16", "on-the-cluster");
         assertEquals(local.subList(0, 17), rows(out));
         Path run = out.resolve("runs/3-contest");
         for (String f : List.of("recording.txt", "events.txt", "result.txt", "server.log")) {

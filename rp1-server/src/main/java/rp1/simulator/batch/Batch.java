@@ -1,6 +1,7 @@
 package rp1.simulator.batch;
 
 import java.io.Closeable;
+import java.io.File;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
@@ -22,6 +23,8 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
 
 import rp1.io.IoFailures;
 import rp1.planparser.RsParsingException;
@@ -144,11 +147,24 @@ public final class Batch {
                         + " value ends at the first space, and each run's files are named in its properties)");
             }
             ClassLoader robots = ClientClassPath.loader(classPath, loader);
+            if (options.client == null) {
+                // Found before the first run, not failed in every run one by one.
+                for (String name : robotClasses) {
+                    if (robots.getResource(name.replace('.', '/') + ".class") == null) {
+                        throw new SweepException(found.location + ": dlcName=" + name + ": no such class on the robot's"
+                                + " class path" + (classPath.isEmpty() ? " (give the robot's classes with -cp)"
+                                : " (-cp " + classPath.stream().map(Path::toString).collect(Collectors.joining(File.pathSeparator)) + ")"));
+                    }
+                }
+            }
             String robotCode;
             try {
                 robotCode = RobotCode.fingerprint(classPath, robotClasses, robots, options.client, workingDirectory);
             } catch (UncheckedIOException e) {
                 throw new SweepException("cannot read the robot's code: " + IoFailures.why(e.getCause()));
+            }
+            if (!options.resume) {
+                refuseToOverwrite(out);
             }
             SweepSpec spec = SweepSpec.of(found.text, planTexts, options, robotCode);
             List<Run> runs = runs(configurations, options.seeds, plans.keySet(), out.resolve("runs"));
@@ -165,6 +181,31 @@ public final class Batch {
         } catch (StartupException e) {
             throw new SweepException("-cp: " + e.getMessage());
         }
+    }
+
+    /**
+     * A sweep's results are not lost to the next one: without {@code --resume} the output folder must
+     * be new or empty (a sweep into one that held a sweep replaced its results.csv, and left its other
+     * runs' folders beside rows that no longer named them).
+     */
+    private static void refuseToOverwrite(Path out) throws SweepException {
+        if (!Files.isDirectory(out)) {
+            return;
+        }
+        boolean empty;
+        try (Stream<Path> entries = Files.list(out)) {
+            empty = entries.findAny().isEmpty();
+        } catch (IOException e) {
+            throw new SweepException("--out " + out + ": " + IoFailures.why(e));
+        }
+        if (empty) {
+            return;
+        }
+        if (Files.exists(out.resolve(SweepSpec.FILE))) {
+            throw new SweepException("--out " + out + " holds a sweep already (" + SweepSpec.FILE + "): add --resume to"
+                    + " go on with it, or give another --out (or delete that one), so that its results are not lost");
+        }
+        throw new SweepException("--out " + out + " is not empty and holds no sweep: give a new or empty folder");
     }
 
     private static void closeQuietly(Closeable c) {

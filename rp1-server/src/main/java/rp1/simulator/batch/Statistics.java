@@ -38,6 +38,11 @@ public record Statistics(int n, double mean, double sd, double ci95, double min,
         if (n == 1) {
             return new Statistics(1, mean, Double.NaN, Double.NaN, min, max);
         }
+        if (min == max) {
+            // All alike: no spread, exactly. Summing them rounds, and the mean of 32 values of 1.7929 is
+            // not 1.7929 in binary: the deviations from it made an sd of 2.4e-16 that looked like one.
+            return new Statistics(n, min, 0.0, 0.0, min, max);
+        }
         double squares = 0;
         for (double v : values) {
             squares += (v - mean) * (v - mean);

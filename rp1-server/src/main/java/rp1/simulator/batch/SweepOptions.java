@@ -156,8 +156,18 @@ public final class SweepOptions {
                 default -> throw new IllegalArgumentException((a.startsWith("-") ? "unknown option " : "unexpected argument ") + a);
             }
         }
-        if (properties == null || seeds == null || out == null) {
-            throw new IllegalArgumentException("-p, --seeds and --out are required");
+        List<String> missing = new ArrayList<>();
+        if (properties == null) {
+            missing.add("-p PROPERTIES");
+        }
+        if (seeds == null) {
+            missing.add("--seeds LIST");
+        }
+        if (out == null) {
+            missing.add("--out DIR");
+        }
+        if (!missing.isEmpty()) {
+            throw new IllegalArgumentException("-p, --seeds and --out are required; missing: " + String.join(", ", missing));
         }
         SweepOptions options = new SweepOptions(properties, seeds, plans, jobs, timeout, out, resume, varied, isolation,
                 client, pictures, classPath);

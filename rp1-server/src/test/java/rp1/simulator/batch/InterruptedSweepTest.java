@@ -10,8 +10,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.FileTime;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -126,15 +128,21 @@ class InterruptedSweepTest {
 
     @Test
     void aRunThatCouldNotStartIsARowTheSweepSaysHowToRunAgain() throws Exception {
-        // A file where the second run's folder should be: that run cannot be started.
-        Files.createDirectories(dir.resolve("out/runs"));
+        // The second run to go again, and a file where its folder should be: it cannot be started.
+        assertEquals(0, inProcess(sweep("1-3")), sweeps.out() + sweeps.err());
+        List<String> rows = new ArrayList<>(rows());
+        rows.remove(2);
+        Files.write(dir.resolve("out/results.csv"), rows, StandardCharsets.UTF_8);
+        try (Stream<Path> files = Files.walk(dir.resolve("out/runs/2-home"))) {
+            files.sorted(Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
+        }
         Files.writeString(dir.resolve("out/runs/2-home"), "in the way");
-        String[] args = sweep("1-3");
+        String[] args = sweep("1-3", "--resume");
         assertEquals(Sweep.RUN_FAILED, inProcess(args), sweeps.out() + sweeps.err());
         assertTrue(rows().get(2).contains(RunReport.NOT_STARTED), rows().get(2));
         assertTrue(sweeps.err().contains("rp1.Sweep: 1 of the failed runs was never carried out (not started, or lost"
                 + " by the cluster; results.csv says why). To run it again, add --resume to the same command:\n  java rp1.Sweep "
-                + String.join(" ", args) + " --resume"), sweeps.err());
+                + String.join(" ", args)), sweeps.err());
 
         Files.delete(dir.resolve("out/runs/2-home"));
         assertEquals(0, inProcess(sweep("1-3", "--resume")), sweeps.out() + sweeps.err());

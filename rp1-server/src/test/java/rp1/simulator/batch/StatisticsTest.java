@@ -31,6 +31,16 @@ class StatisticsTest {
     }
 
     @Test
+    void valuesAllAlikeHaveNoSpreadAtAll() {
+        double[] same = new double[32];
+        java.util.Arrays.fill(same, 1.7929);
+        Statistics s = Statistics.of(same);
+        assertEquals(1.7929, s.mean());
+        assertEquals(0.0, s.sd(), "not 2.4e-16 from the rounding of the sum");
+        assertEquals(0.0, s.ci95());
+    }
+
+    @Test
     void studentsTBeyondTheTableFollowsThePublishedValues() {
         assertEquals(2.0423, Statistics.t975(30), 1e-4);
         assertEquals(2.0211, Statistics.t975(40), 1e-4);

@@ -87,8 +87,11 @@ class SweepTest {
         // The picture is drawn while the tables and index.html are written: the index, written first,
         // must not keep showing a picture that then failed.
         Path p = properties("exitWhenClientsDone=true", "maxSimulationTime=30");
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "1-2", "--out", dir.resolve("out").toString()), sweeps.err());
+        Files.delete(dir.resolve("out/summary.png"));
         Files.createDirectories(dir.resolve("out/summary.png/in-the-way"));
-        int status = sweep("-p", p.toString(), "--seeds", "1-2", "--out", dir.resolve("out").toString());
+        sweeps.reset();
+        int status = sweep("-p", p.toString(), "--seeds", "1-2", "--out", dir.resolve("out").toString(), "--resume");
         assertEquals(1, status, sweeps.out() + sweeps.err());
         assertTrue(sweeps.err().startsWith("rp1.Sweep: " + dir.resolve("out/summary.png")), sweeps.err());
         assertEquals(3, Files.readAllLines(dir.resolve("out/results.csv")).size());
@@ -113,6 +116,36 @@ class SweepTest {
         assertEquals("rooms", Batch.stem("maps/rooms.yaml"), "a map's plan too");
         assertEquals("lab", Batch.stem("lab.YML"));
         assertEquals("my_plan.v2", Batch.stem("my plan.v2.txt"));
+    }
+
+    @Test
+    void aSweepIntoAFolderThatHoldsOneOrOtherFilesIsRefusedSoNoResultIsLost() throws Exception {
+        Path p = properties("exitWhenClientsDone=true", "maxSimulationTime=30");
+        String out = dir.resolve("out").toString();
+        assertEquals(0, sweep("-p", p.toString(), "--seeds", "1-3", "--out", out), sweeps.err());
+        sweeps.reset();
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--out", out));
+        assertEquals("rp1.Sweep: --out " + out + " holds a sweep already (sweep.ini): add --resume to go on with it, or"
+                + " give another --out (or delete that one), so that its results are not lost\n", sweeps.err());
+        assertEquals(4, Files.readAllLines(dir.resolve("out/results.csv")).size(), "the three rows are still there");
+        Files.createDirectories(dir.resolve("mine"));
+        Files.writeString(dir.resolve("mine/results.csv"), "my own\n");
+        sweeps.reset();
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--out", dir.resolve("mine").toString()));
+        assertTrue(sweeps.err().contains("is not empty and holds no sweep: give a new or empty folder"), sweeps.err());
+        assertEquals("my own\n", Files.readString(dir.resolve("mine/results.csv")));
+    }
+
+    @Test
+    void aRobotClassThatIsNotThereAndAMissingOptionAreToldBeforeAnyRun() throws Exception {
+        Path p = properties("exitWhenClientsDone=true", "maxSimulationTime=30", "dlcName=no.such.Robot");
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1-4", "--out", dir.resolve("out").toString()));
+        assertTrue(sweeps.err().contains(p + ": dlcName=no.such.Robot: no such class on the robot's class path (give the"
+                + " robot's classes with -cp)"), sweeps.err());
+        assertTrue(Files.notExists(dir.resolve("out")), "no run failed one by one");
+        sweeps.reset();
+        assertEquals(1, sweep("-p", p.toString(), "--seeds", "1-4"));
+        assertTrue(sweeps.err().startsWith("rp1.Sweep: -p, --seeds and --out are required; missing: --out DIR"), sweeps.err());
     }
 
     @Test
