@@ -22,6 +22,7 @@ import rp1.simulator.batch.RunReport;
 import rp1.simulator.batch.SummaryCsv;
 import rp1.simulator.batch.SweepException;
 import rp1.simulator.batch.SweepOptions;
+import rp1.simulator.config.PropertyKeys;
 import rp1.simulator.config.ServerConfig;
 import rp1.view.SweepPicture;
 import rp1.web.SweepIndex;
@@ -188,9 +189,12 @@ public final class Sweep {
             out.println("rp1.Sweep: " + (outcomes.size() - failed) + " runs ended as asked, " + failed + " failed; "
                     + batch.out().resolve("results.csv") + ", " + summary + ", " + batch.out().resolve(SweepIndex.NAME));
             for (String unread : unreadParameters(batch.variedKeys(), outcomes)) {
+                String name = unread.substring(ServerConfig.PARAMETER_PREFIX.length());
+                String meant = meant(name, outcomes);
                 err.println("rp1.Sweep: --vary " + unread + ": no robot asked for it (RsClient.getRunParameter(\""
-                        + unread.substring(ServerConfig.PARAMETER_PREFIX.length()) + "\")), so its configurations differ by its name"
-                        + " alone; is the name the robot's?");
+                        + name + "\")), so its configurations differ by its name alone; "
+                        + (meant == null ? "is the name the robot's?" : "did you mean " + ServerConfig.PARAMETER_PREFIX
+                        + meant + " (the robot asked for it)?"));
             }
             String note = batch.engineNote();
             if (note != null) {
@@ -234,6 +238,24 @@ public final class Sweep {
             }
         }
         return unread;
+    }
+
+    /**
+     * The parameter the robots asked for whose name is nearest {@code name} (a typo's likely intent),
+     * or null if none is within a few letters of it.
+     */
+    static String meant(String name, List<Batch.Outcome> outcomes) {
+        String best = null;
+        int bestDistance = Math.max(2, name.length() / 3) + 1;
+        for (String asked : outcomes.stream().map(o -> o.report().parametersAsked()).filter(a -> a != null)
+                .flatMap(List::stream).distinct().sorted().toList()) {
+            int d = PropertyKeys.distance(name, asked);
+            if (d < bestDistance) {
+                best = asked;
+                bestDistance = d;
+            }
+        }
+        return best;
     }
 
     /** Waits for the summary picture; if it could not be written, does {@code instead} and throws why. */

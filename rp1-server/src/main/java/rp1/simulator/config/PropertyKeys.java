@@ -12,7 +12,7 @@ import java.util.Set;
  * simulated seconds). The table itself is {@link ServerConfig#KEYS}: a key is known because it is
  * declared there, and {@link PropertyReader} refuses to read one that is not.
  */
-final class PropertyKeys {
+public final class PropertyKeys {
     private final Set<String> known;
     private final Map<String, String> unused;
     private final List<String> families;
@@ -75,7 +75,7 @@ final class PropertyKeys {
     }
 
     /** Levenshtein distance: insertions, deletions and substitutions of one character each count 1. */
-    static int distance(String a, String b) {
+    public static int distance(String a, String b) {
         int[] previous = new int[b.length() + 1];
         int[] current = new int[b.length() + 1];
         for (int j = 0; j <= b.length(); j++) {

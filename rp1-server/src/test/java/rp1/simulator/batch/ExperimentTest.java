@@ -141,7 +141,7 @@ class ExperimentTest {
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.sped=0.1,0.3", "--vary",
                 "param.speed=0.1,0.2", "--out", dir.resolve("typo").toString()), sweeps.err());
         assertEquals("rp1.Sweep: --vary param.sped: no robot asked for it (RsClient.getRunParameter(\"sped\")), so its"
-                + " configurations differ by its name alone; is the name the robot's?\n", sweeps.err());
+                + " configurations differ by its name alone; did you mean param.speed (the robot asked for it)?\n", sweeps.err());
         sweeps.reset();
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "1", "--vary", "param.sped=0.1", "--isolation", "process",
                 "--out", dir.resolve("process").toString()), sweeps.err());
