@@ -1,8 +1,10 @@
 package rp1.web;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -178,6 +180,23 @@ class BrowserPageTest {
         browser.driver().findElement(By.linkText("replay")).click();
         awaitTrue(() -> browser.driver().getCurrentUrl().endsWith("runs/1-WhiteRoom/replay.html"), "the run's page opens");
         assertTrue(browser.number("return rp1.frames()") > 100);
+        assertEquals(List.of(), browser.consoleErrors());
+    }
+
+    @Test
+    void theSweepIndexSummaryShowsMeansAndIntervalsFirstAndAllColumnsOnAClick(@TempDir Path sweep) throws Exception {
+        // summary.csv has six columns a metric: 65 for the bumper, distance_mean off a 1600-pixel screen.
+        SweepIndexTest.sweep(sweep);
+        Files.writeString(sweep.resolve("summary.csv"), "plan,robot,runs,failed,distance_n,distance_mean,distance_sd,"
+                + "distance_ci95,distance_min,distance_max\nWhiteRoom.txt,Wanderer,2,1,1,2.5,,,2.5,2.5\n");
+        SweepIndex.write(sweep, false);
+        browser.open(sweep.resolve(SweepIndex.NAME).toUri().toString());
+        String brief = browser.driver().findElement(By.id("summary")).getText();
+        assertTrue(brief.contains("distance_mean") && brief.contains("distance_ci95"), brief);
+        assertFalse(brief.contains("distance_sd") || brief.contains("distance_max"), brief);
+        browser.driver().findElement(By.id("all-columns")).click();
+        String all = browser.driver().findElement(By.id("summary")).getText();
+        assertTrue(all.contains("distance_sd") && all.contains("distance_max") && all.contains("distance_n"), all);
         assertEquals(List.of(), browser.consoleErrors());
     }
 
