@@ -64,7 +64,8 @@ public final class Recorder implements InputQueue.Listener {
     }
 
     private void writeHeader(Header h) throws IOException {
-        out.write(("# A run of the RP1 simulator; replay it with: ./rp1 replay " + out.file().getFileName() + "\n")
+        out.write(("# A run of the RP1 simulator; replay it, from the folder it is in, with: rp1 replay "
+                + out.file().getFileName() + " (./rp1 from the repository)\n")
                 .getBytes(StandardCharsets.UTF_8));
         write(new TextLine(RecordingFormat.MAGIC).integer(RecordingFormat.VERSION));
         write(new TextLine(RecordingFormat.WORLD_MODEL).integer(WorldModel.VERSION));
