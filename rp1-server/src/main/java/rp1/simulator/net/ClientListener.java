@@ -16,10 +16,8 @@ import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.Iterator;
 import java.util.List;
-import java.util.Map;
 
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
@@ -85,8 +83,6 @@ public final class ClientListener {
     private final SharedBudget allOutput;
     /** Seconds a client may keep the interlock waiting (0: as long as it takes). */
     private final double interlockTimeout;
-    /** The network's clients by their sessions, to disconnect one the interlock waits for too long. */
-    private final Map<ClientSession, ClientConnection> sessions = new HashMap<>();
 
     private ClientListener(ServerSocketChannel serverSocket, Selector selector, Simulation simulation,
                            ClientRegistry clients, RsLogInterface log, Settings settings) {
@@ -208,6 +204,8 @@ public final class ClientListener {
     private static final class Peer {
         final SocketChannel channel;
         final ClientConnection connection;
+        /** Its session in the simulation. */
+        final ClientSession session;
         final long deadline;
         /** What was read this round, one array per read, in order; the connection joins split messages. */
         final List<byte[]> unread = new ArrayList<>();
@@ -215,9 +213,10 @@ public final class ClientListener {
         /** The bytes of its incomplete message as last counted in {@link #incomplete}. */
         int held;
 
-        Peer(SocketChannel channel, ClientConnection connection, long deadline) {
+        Peer(SocketChannel channel, ClientConnection connection, ClientSession session, long deadline) {
             this.channel = channel;
             this.connection = connection;
+            this.session = session;
             this.deadline = deadline;
         }
     }
@@ -292,14 +291,16 @@ public final class ClientListener {
      * disconnected, so that one client that stopped answering cannot stop the world for the others.
      */
     private void disconnectOverdue() {
-        sessions.entrySet().removeIf(e -> e.getValue().hasEnded());
         if (interlockTimeout <= 0) {
             return;
         }
-        for (ClientSession late : simulation.overdueSessions(interlockTimeout)) {
-            ClientConnection c = sessions.get(late);
-            if (c != null && !c.hasEnded()) {
-                c.close("it did not acknowledge an event within " + interlockTimeout + " s (interlockTimeout)");
+        List<ClientSession> late = simulation.overdueSessions(interlockTimeout);
+        if (late.isEmpty()) {
+            return;
+        }
+        for (SelectionKey key : selector.keys()) {
+            if (key.attachment() instanceof Peer p && late.contains(p.session) && !p.connection.hasEnded()) {
+                p.connection.close("it did not acknowledge an event within " + interlockTimeout + " s (interlockTimeout)");
             }
         }
     }
@@ -368,8 +369,8 @@ public final class ClientListener {
             OutboundQueue out = OutboundQueue.start(new ChannelTransport(channel), queueLimit, budgets.output, allOutput,
                     "writer " + description, c::close);
             c.setInputOutputStreams(null, out);
-            sessions.put(simulation.attach(c, description, Simulation.Link.SHARED_READER), c);
-            Peer p = new Peer(channel, c, System.nanoTime() + connectTimeoutNanos);
+            ClientSession session = simulation.attach(c, description, Simulation.Link.SHARED_READER);
+            Peer p = new Peer(channel, c, session, System.nanoTime() + connectTimeoutNanos);
             channel.register(selector, SelectionKey.OP_READ, p);
             introducing.add(p);
         } catch (IOException e) {
@@ -413,7 +414,6 @@ public final class ClientListener {
         ClientConnection c = p.connection;
         if (c.hasEnded()) {
             p.unread.clear();
-            release(p);
             closeQuietly(p.channel);
             return;
         }
@@ -430,7 +430,6 @@ public final class ClientListener {
             } else {
                 handshakeFailed(p, reason);
             }
-            release(p);
             closeQuietly(p.channel);
             return;
         } catch (RuntimeException e) {
@@ -439,7 +438,6 @@ public final class ClientListener {
             StringWriter trace = new StringWriter();
             e.printStackTrace(new PrintWriter(trace));
             c.close("handling its message failed: " + trace);
-            release(p);
             closeQuietly(p.channel);
             return;
         } finally {
@@ -456,7 +454,6 @@ public final class ClientListener {
             } else {
                 handshakeFailed(p, "the connection closed before CONNECT");
             }
-            release(p);
             closeQuietly(p.channel);
         }
     }
@@ -474,7 +471,8 @@ public final class ClientListener {
         }
         incomplete += held - p.held;
         p.held = held;
-        // The running count can only be too high (a client closed elsewhere): count again before refusing.
+        // The running count keeps what clients that have gone held (it can only be too high): it is
+        // counted again, from the clients still here, before anyone is refused.
         if (incomplete > allIncomplete && countIncomplete() > allIncomplete) {
             throw new IOException("over budget: the clients' incomplete messages would hold " + incomplete + " bytes"
                     + " in all, more than the " + allIncomplete + " they all may (a quarter of the server's memory);"
@@ -495,11 +493,6 @@ public final class ClientListener {
         return total;
     }
 
-    /** The peer's incomplete message is no longer held. */
-    private void release(Peer p) {
-        incomplete -= p.held;
-        p.held = 0;
-    }
 
     private void expireHandshakes() {
         long now = System.nanoTime();
@@ -511,8 +504,7 @@ public final class ClientListener {
             } else if (now - p.deadline >= 0) {
                 it.remove();
                 handshakeFailed(p, "no CONNECT within " + connectTimeoutNanos / 1_000_000L + " ms (connectTimeout)");
-                release(p);
-                closeQuietly(p.channel);
+                    closeQuietly(p.channel);
             }
         }
     }

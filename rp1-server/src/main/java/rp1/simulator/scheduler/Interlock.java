@@ -28,11 +28,13 @@ import rp1.rossum.RsInterlock;
  * went down (behavior.md section 3.5).
  */
 public final class Interlock {
+    /** The newest number a client has not acknowledged, and since when (System.nanoTime) it has owed one. */
+    private record Owed(int number, long since) {
+    }
+
     private final Scheduler scheduler;
     /** Each client's newest number not yet acknowledged. */
-    private final Map<Object, Integer> pending = new HashMap<>();
-    /** Since when (System.nanoTime) each client with a number pending has kept the clock waiting. */
-    private final Map<Object, Long> waitingSince = new HashMap<>();
+    private final Map<Object, Owed> pending = new HashMap<>();
     /** The number {@link #sending} gave the event a client's connection is about to write. */
     private final Map<Object, Integer> numbered = new HashMap<>();
     /** Clients whose connection has ended. */
@@ -101,9 +103,8 @@ public final class Interlock {
 
     /** {@code client} owes the acknowledgement of {@code number}; it began to keep the clock waiting if it owed none. */
     private void owe(Object client, int number) {
-        if (pending.put(client, number) == null) {
-            waitingSince.put(client, System.nanoTime());
-        }
+        Owed before = pending.get(client);
+        pending.put(client, new Owed(number, before == null ? System.nanoTime() : before.since()));
     }
 
     /** The number of the event {@code client}'s connection writes: the one {@link #sending} gave it, or a new one. */
@@ -127,12 +128,11 @@ public final class Interlock {
      * @return whether the clock was restarted
      */
     public synchronized boolean close(Object client, int value) {
-        Integer newest = pending.get(client);
-        if (newest == null || value < newest) {
+        Owed newest = pending.get(client);
+        if (newest == null || value < newest.number()) {
             return false;
         }
         pending.remove(client);
-        waitingSince.remove(client);
         return restartIfNonePending();
     }
 
@@ -148,7 +148,6 @@ public final class Interlock {
     public synchronized boolean leave(Object client, Runnable departure) {
         ended.add(client);
         numbered.remove(client);
-        waitingSince.remove(client);
         if (pending.remove(client) != null) {
             departure.run();
             return restartIfNonePending();
@@ -170,7 +169,6 @@ public final class Interlock {
     public synchronized void forget(Object client) {
         ended.remove(client);
         pending.remove(client);
-        waitingSince.remove(client);
         numbered.remove(client);
         deferred.remove(client);
     }
@@ -182,8 +180,8 @@ public final class Interlock {
     public synchronized List<Object> overdue(long nanos) {
         long now = System.nanoTime();
         List<Object> late = new ArrayList<>();
-        waitingSince.forEach((client, since) -> {
-            if (now - since > nanos) {
+        pending.forEach((client, owed) -> {
+            if (now - owed.since() > nanos) {
                 late.add(client);
             }
         });

@@ -46,6 +46,12 @@ class ExperimentTest {
         return Files.write(dir.resolve("experiment.ini"), lines);
     }
 
+    /** ExperimentDlc as a program of its own, for --client. */
+    private static String clientProgram() {
+        return Path.of(System.getProperty("java.home"), "bin", "java") + " -cp " + System.getProperty("java.class.path")
+                + " " + ExperimentDlc.class.getName();
+    }
+
     private List<List<String>> table(String folder, String file) throws IOException {
         return CsvText.rows(Files.readString(dir.resolve(folder).resolve(file)));
     }
@@ -222,8 +228,7 @@ class ExperimentTest {
     @Test
     void aClientProgramIsEachRunsRobotWithTheRunInItsEnvironment() throws Exception {
         Path p = properties();
-        String java = Path.of(System.getProperty("java.home"), "bin", "java") + " -cp "
-                + System.getProperty("java.class.path") + " " + ExperimentDlc.class.getName();
+        String java = clientProgram();
         assertEquals(0, sweep("-p", p.toString(), "--seeds", "8", "--vary", "param.speed=0.15", "--client", java,
                 "--out", dir.resolve("out").toString()), sweeps.err());
         List<String> header = table("out", "results.csv").get(0);
@@ -240,8 +245,7 @@ class ExperimentTest {
         // Its robot leaves the floor, which ends the run (nobody-left), and then the program fails: an
         // exit status the run must not read as success.
         Path p = properties();
-        String java = Path.of(System.getProperty("java.home"), "bin", "java") + " -cp "
-                + System.getProperty("java.class.path") + " " + ExperimentDlc.class.getName();
+        String java = clientProgram();
         assertEquals(Sweep.RUN_FAILED, sweep("-p", p.toString(), "--seeds", "8", "--vary", "param.exit=0,3", "--client",
                 java, "--out", dir.resolve("out").toString()), sweeps.err());
         List<String> header = table("out", "results.csv").get(0);

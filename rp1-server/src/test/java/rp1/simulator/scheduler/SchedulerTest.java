@@ -13,6 +13,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.function.DoubleConsumer;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -217,7 +218,29 @@ class SchedulerTest {
         assertEquals(Arrays.asList("task@1.0", "c leaves@1.0", "view@1.0", "a1@1.0", "b1@1.0", "b2@1.0", "next@2.0"), log);
     }
 
+    @Test
+    void anInputThatThrowsIsReportedAndTheRestOfTheBatchIsStillApplied() {
+        Scheduler s = lockstep();
+        List<RuntimeException> failures = new ArrayList<>();
+        s.setFailureHandler(failures::add);
+        InputQueue inputs = new InputQueue(s);
+        inputs.submit(input(1, false, t -> {
+            throw new IllegalStateException("a request the world could not take");
+        }));
+        inputs.submit(input(2, false, "client 2's request"));
+        inputs.submit(input(3, true, "client 3 leaves"));
+        inputs.cross(1.5);
+        assertEquals(List.of("client 3 leaves@1.5", "client 2's request@1.5"), log, "departures first, then by source");
+        assertEquals(1, failures.size());
+        assertEquals("a request the world could not take", failures.get(0).getMessage());
+        assertTrue(inputs.isSettled(), "every input counts as applied");
+    }
+
     private Input input(int source, boolean departure, String name) {
+        return input(source, departure, t -> log.add(name + "@" + t));
+    }
+
+    private static Input input(int source, boolean departure, DoubleConsumer action) {
         return new Input() {
             @Override
             public int source() {
@@ -231,7 +254,7 @@ class SchedulerTest {
 
             @Override
             public void apply(double simTime) {
-                log.add(name + "@" + simTime);
+                action.accept(simTime);
             }
         };
     }
