@@ -34,6 +34,9 @@ public class RsBody extends RsComponent {
     /** Whether the current motion was cut short by a predicted collision. */
     public boolean collision;
 
+    /** What {@link #releaseContactSensors} and {@link #pressContactSensors} return when no sensor changes: empty, so shared. */
+    private static final RsContactSensorEvent[] NO_CONTACT_EVENTS = new RsContactSensorEvent[0];
+
     private final ArrayList<RsBodyPart> parts = new ArrayList<>();
     /**
      * The sensors in part order, a list that cannot be changed, kept because the simulator reads them
@@ -42,6 +45,10 @@ public class RsBody extends RsComponent {
     private transient List<RsBodySensor> sensors;
     /** The interactive shapes in part order, kept for the same reason (every motion is searched with them). */
     private transient RsBodyShape[] interactive;
+    /** The contact sensors in part order, kept for the same reason (looked at at every motion's start and end). */
+    private transient RsBodyContactSensor[] contactSensors;
+    /** Each contact sensor's outline where the last motion started, filled again at every start. */
+    private transient RsSegment[][] contactOutlines;
     private int bodyID;
 
     /** An empty body; null is kept as the name and transmitted as "". */
@@ -62,6 +69,7 @@ public class RsBody extends RsComponent {
         parts.add(part);
         sensors = null;
         interactive = null;
+        contactSensors = null;
         part.joined(this);
         if (part instanceof RsWheelSystem) {
             wheelSystem = (RsWheelSystem) part;
@@ -116,6 +124,16 @@ public class RsBody extends RsComponent {
             }
             kept = shapes.toArray(new RsBodyShape[0]);
             interactive = kept;
+        }
+        return kept;
+    }
+
+    private RsBodyContactSensor[] contactSensors() {
+        RsBodyContactSensor[] kept = contactSensors;
+        if (kept == null) {
+            kept = partsOf(RsBodyContactSensor.class).toArray(new RsBodyContactSensor[0]);
+            contactSensors = kept;
+            contactOutlines = new RsSegment[kept.length][];
         }
         return kept;
     }
@@ -373,12 +391,15 @@ public class RsBody extends RsComponent {
      * sensor can still go hot although the chassis stopped the motion before the sensor touched.
      */
     private void flagContactSensors(RsWall[] walls) {
-        List<RsBodyContactSensor> sensors = partsOf(RsBodyContactSensor.class);
+        RsBodyContactSensor[] sensors = contactSensors();
+        RsSegment[][] outlines = contactOutlines;
         double earliest = Double.POSITIVE_INFINITY;
-        for (RsBodyContactSensor s : sensors) {
+        for (int i = 0; i < sensors.length; i++) {
+            RsBodyContactSensor s = sensors[i];
             s.setCollision(false, null);
             s.setCollisionTime(Double.POSITIVE_INFINITY);
-            RsSegment[] body = BodyOutline.map(s.outline(), motion.transform0);
+            RsSegment[] body = BodyOutline.mapInto(s.outline(), motion.transform0, outlines[i]);
+            outlines[i] = body;
             for (RsWall wall : walls) {
                 RsSegment[] edges = wall.getSegmentArray();
                 double t = motion.contactTime(body, body.length, edges, edges.length);
@@ -404,14 +425,17 @@ public class RsBody extends RsComponent {
      *         collision search recorded ("" if none)
      */
     public RsContactSensorEvent[] releaseContactSensors(double simTime) {
-        List<RsContactSensorEvent> events = new ArrayList<>();
-        for (RsBodyContactSensor s : partsOf(RsBodyContactSensor.class)) {
+        List<RsContactSensorEvent> events = null;
+        for (RsBodyContactSensor s : contactSensors()) {
             if (s.getHot() && !s.isInContactAtMotionStart()) {
+                if (events == null) {
+                    events = new ArrayList<>();
+                }
                 s.setHot(false);
                 events.add(s.getStateChangeEvent(simTime));
             }
         }
-        return events.toArray(new RsContactSensorEvent[0]);
+        return events == null ? NO_CONTACT_EVENTS : events.toArray(NO_CONTACT_EVENTS);
     }
 
     /**
@@ -421,17 +445,20 @@ public class RsBody extends RsComponent {
      * @return one event per pressed sensor, in part order, with the wall name
      */
     public RsContactSensorEvent[] pressContactSensors(double simTime) {
-        List<RsContactSensorEvent> events = new ArrayList<>();
         if (motion == null || !motion.collision) {
-            return new RsContactSensorEvent[0];
+            return NO_CONTACT_EVENTS;
         }
-        for (RsBodyContactSensor s : partsOf(RsBodyContactSensor.class)) {
+        List<RsContactSensorEvent> events = null;
+        for (RsBodyContactSensor s : contactSensors()) {
             if (s.getCollision() && !s.getHot()) {
+                if (events == null) {
+                    events = new ArrayList<>();
+                }
                 s.setHot(true);
                 events.add(s.getStateChangeEvent(simTime));
             }
         }
-        return events.toArray(new RsContactSensorEvent[0]);
+        return events == null ? NO_CONTACT_EVENTS : events.toArray(NO_CONTACT_EVENTS);
     }
 
     /** The bounding box of the body at its current pose, world coordinates. */

@@ -35,6 +35,9 @@ final class MotionStepper implements Task {
     private long runs;
     /** The robots due for evaluation. */
     private final DueRobots due = new DueRobots();
+    /** The robots of the run under way, and those of them that needed it; emptied at every run. */
+    private final List<Robot> group = new ArrayList<>();
+    private final List<Robot> active = new ArrayList<>();
     private TaskHandle queued = TaskHandle.NONE;
     private double queuedTime = Double.NaN;
 
@@ -99,9 +102,9 @@ final class MotionStepper implements Task {
     @Override
     public void run(double time) {
         runs++;
-        List<Robot> group = new ArrayList<>();
+        group.clear();
+        active.clear();
         due.takeDueBy(time, group);
-        List<Robot> active = new ArrayList<>();
         for (Robot r : group) {
             if (r.needsProcessing()) {
                 active.add(r);
@@ -134,6 +137,9 @@ final class MotionStepper implements Task {
             }
         }
         requeue();
+        // Not kept past the run: a robot that leaves is not held in the lists until the next one.
+        group.clear();
+        active.clear();
         changed.accept(time);
     }
 }

@@ -4,7 +4,7 @@ import static rp1.rossum.wire.MotionLimits.NULL_LIMIT;
 import static rp1.rossum.wire.MotionLimits.STRAIGHT_LIMIT;
 
 import java.util.ArrayList;
-import java.util.Collections;
+import java.util.Arrays;
 import java.util.List;
 
 import rp1.rossum.RsRectangle;
@@ -166,11 +166,16 @@ final class Surroundings {
 
     /** The walls followed by the other robots' shapes (as walls), in order. */
     private static RsWall[] withRobots(RsWall[] walls, List<RsWall[]> others) {
-        List<RsWall> all = new ArrayList<>(walls.length + 4 * others.size());
-        Collections.addAll(all, walls);
+        int n = walls.length;
         for (RsWall[] o : others) {
-            Collections.addAll(all, o);
+            n += o.length;
         }
-        return all.toArray(new RsWall[0]);
+        RsWall[] all = Arrays.copyOf(walls, n);
+        int at = walls.length;
+        for (RsWall[] o : others) {
+            System.arraycopy(o, 0, all, at, o.length);
+            at += o.length;
+        }
+        return all;
     }
 }
