@@ -94,6 +94,17 @@ final class ClientLauncher implements LoadedClient.Listener {
         return clients.isEmpty();
     }
 
+    /** The clients' threads started so far (ended or not). Threads a client starts itself are not among them. */
+    List<Thread> threads() {
+        List<Thread> started = new ArrayList<>();
+        for (LoadedClient c : clients) {
+            if (c.thread() != null) {
+                started.add(c.thread());
+            }
+        }
+        return started;
+    }
+
     /**
      * Connects every client to {@code simulation}, in order, then starts their threads one after the
      * other on a thread of its own (see the class comment), and then runs {@code whenStarted} on it:

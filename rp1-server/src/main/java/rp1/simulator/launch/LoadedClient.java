@@ -45,6 +45,8 @@ final class LoadedClient {
     /** What failed, as the log said it, or null while nothing has. */
     private volatile String failure;
     private final AtomicBoolean done = new AtomicBoolean();
+    /** The client's thread once started, else null. */
+    private volatile Thread thread;
 
     private LoadedClient(String className, RsRunnable client) {
         this.className = className;
@@ -161,7 +163,13 @@ final class LoadedClient {
     void start(ServerLog log, Listener listener) {
         Thread t = new Thread(() -> runClient(log, listener), "dlc " + className);
         t.setDaemon(true);
+        thread = t;
         t.start();
+    }
+
+    /** The client's thread (which may have ended), or null if it was never started. */
+    Thread thread() {
+        return thread;
     }
 
     /*

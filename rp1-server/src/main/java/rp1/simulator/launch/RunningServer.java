@@ -13,6 +13,7 @@ import rp1.simulator.config.ServerConfig;
 import rp1.simulator.net.ClientListener;
 import rp1.simulator.net.ClientRegistry;
 import rp1.simulator.record.RunRecords;
+import rp1.simulator.scheduler.Scheduler;
 
 /**
  * A server that has started: its threads (the scheduler's dispatch loop, the network thread, a reader
@@ -23,13 +24,17 @@ import rp1.simulator.record.RunRecords;
  * when every loaded client is done ({@code exitWhenClientsDone}), when a max-speed run has nobody
  * left ({@link #NOBODY_LEFT}), or when a loaded client fails to
  * initialize. Stopping closes every client, stops the scheduler, finishes the recording and event log
- * (if any) and flushes and closes the log; the exit status says how it ended ({@link ExitStatus}),
+ * (if any), ends the threads a robot's code holds past the stop ({@link StuckThreads}) and flushes and
+ * closes the log; the exit status says how it ended ({@link ExitStatus}),
  * {@link ExitStatus#OUTPUT_FAILED} if it ended as asked but its recording, event log or a picture
  * could not be written.
  */
 public final class RunningServer {
-    /** How long stopping waits for the scheduler to finish the task it is running. */
-    private static final long SCHEDULER_JOIN_MILLIS = 5000;
+    /**
+     * How long stopping waits for the scheduler to finish the task it is running, and then for the
+     * loaded clients' threads to end, before it ends them ({@link StuckThreads}).
+     */
+    private static final long GRACE_MILLIS = 2000;
 
     /** The stop reason of a max-speed run that every client and robot has left ({@link #endWhenDeserted}). */
     public static final String NOBODY_LEFT = "nobody-left";
@@ -311,6 +316,7 @@ public final class RunningServer {
             log.important("Exit status " + ExitStatus.OUTPUT_FAILED + " (the run's output could not be written)");
         }
         parts.registry.closeAll("the server is shutting down");
+        endClientThreads();
         Runtime rt = Runtime.getRuntime();
         log.raw("  Total Memory used by JVM: " + rt.totalMemory());
         log.raw("  Free  Memory:             " + rt.freeMemory());
@@ -318,14 +324,41 @@ public final class RunningServer {
         exited.countDown();
     }
 
-    /** Waits for the scheduler thread to end and for any other thread to finish the task it was running. */
+    /**
+     * Waits for the scheduler thread to end and for any other thread to finish the task it was running;
+     * a thread that will not (a robot's handler that never returns) is ended, with a log line.
+     */
     private void joinScheduler() {
         if (Thread.currentThread() == scheduler) {
             return;
         }
+        Scheduler tasks = parts.simulation.getScheduler();
         try {
-            scheduler.join(SCHEDULER_JOIN_MILLIS);
-            parts.simulation.getScheduler().awaitIdle(SCHEDULER_JOIN_MILLIS);
+            List<String> stuck = new ArrayList<>(StuckThreads.end(List.of(scheduler), GRACE_MILLIS));
+            if (!tasks.awaitIdle(stuck.isEmpty() ? GRACE_MILLIS : 0)) {
+                Thread holder = tasks.runningTasks();
+                if (holder != null && holder != Thread.currentThread()) {
+                    stuck.addAll(StuckThreads.end(List.of(holder), 0));
+                }
+                tasks.awaitIdle(StuckThreads.AFTER_EACH_STEP_MILLIS);
+            }
+            for (String line : stuck) {
+                parts.log.important("The simulation's task did not end when the run stopped: " + line);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /**
+     * Waits for the loaded clients' threads (and the threads they started) to end now that their
+     * sessions are closed; those that will not are ended, with a log line.
+     */
+    private void endClientThreads() {
+        try {
+            for (String line : StuckThreads.end(parts.launcher.threads(), GRACE_MILLIS)) {
+                parts.log.important("A loaded client's thread did not end with the run: " + line);
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

@@ -558,6 +558,16 @@ public final class Scheduler {
         }
     }
 
+    /** The thread running a task now, or null: after {@link #awaitIdle} failed, the one that holds on. */
+    public Thread runningTasks() {
+        lock.lock();
+        try {
+            return executor;
+        } finally {
+            lock.unlock();
+        }
+    }
+
     private boolean tryAcquire() {
         lock.lock();
         try {

@@ -8,11 +8,15 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import rp1.Sweep;
 
@@ -108,6 +112,30 @@ class SweepTest {
         List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
         assertTrue(rows.get(1).startsWith("2," + dir.resolve("home.txt") + ",runs/2-home,"), rows.get(1));
         assertTrue(rows.get(1).contains(",124,timeout: still running after 2 s of wall time,"), rows.get(1));
+    }
+
+    @ParameterizedTest
+    @ValueSource(classes = {SpinningHandlerDlc.class, SpinningRunDlc.class})
+    void aRobotThatComputesForEverIsStoppedWithItsRunInsteadOfKeepingAProcessorBusy(Class<?> robot) throws Exception {
+        // In a handler the simulation calls, it holds the simulation's thread; in run(), its own. Either
+        // would go on through every later run of the sweep's process.
+        Path p = properties("exitWhenClientsDone=true", "dlcName=" + robot.getName());
+        int status = sweep("-p", p.toString(), "--seeds", "1-2", "--jobs", "2", "--timeout", "1", "--out",
+                dir.resolve("out").toString());
+        assertEquals(Sweep.RUN_FAILED, status, sweeps.out() + sweeps.err());
+        List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
+        assertEquals(3, rows.size(), rows.toString());
+        assertTrue(rows.get(2).contains(",124,timeout: still running after 1 s of wall time,"), rows.get(2));
+        List<String> spinning = new ArrayList<>();
+        Thread.getAllStackTraces().forEach((thread, stack) -> {
+            if (Arrays.stream(stack).anyMatch(f -> f.getClassName().startsWith(SpinningHandlerDlc.class.getName()))) {
+                spinning.add(thread.getName());
+            }
+        });
+        assertEquals(List.of(), spinning, "threads still running the robot's code");
+        String log = Files.readString(dir.resolve("out/runs/1-home/server.log"));
+        assertTrue(log.contains(" in " + SpinningHandlerDlc.class.getName() + ".spin(SpinningHandlerDlc.java:"), log);
+        assertTrue(log.contains("): stopped\n"), log);
     }
 
     @Test

@@ -1,0 +1,29 @@
+package rp1.simulator.batch;
+
+import java.io.IOException;
+
+import rp1.rossum.RsBody;
+import rp1.rossum.RsBodyCircle;
+import rp1.rossum.RsClient;
+
+/** A robot whose timeout handler, called by the simulation itself, computes for ever once it is placed. */
+public class SpinningHandlerDlc extends RsClient {
+    @Override
+    public void initialize() throws IOException {
+        super.initialize();
+        RsBody body = new RsBody("spinning");
+        body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
+        sendBodySpecification(body);
+        addTimeoutEventHandler(e -> spin());
+        sendPlacementRequest("home");
+        sendTimeoutRequest(1.0);
+    }
+
+    static long spin() {
+        long n = 0;
+        while (n >= 0) {
+            n = (n + 1) & Long.MAX_VALUE;
+        }
+        return n;
+    }
+}
