@@ -11,7 +11,7 @@ import rp1.io.IoFailures;
 import rp1.io.WholeFiles;
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
-import rp1.simulator.batch.RunStatistics;
+import rp1.simulator.outcome.RunStatistics;
 import rp1.simulator.record.Recording;
 import rp1.simulator.record.RecordingException;
 import rp1.simulator.record.RecordingReader;

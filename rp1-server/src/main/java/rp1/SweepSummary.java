@@ -12,8 +12,8 @@ import java.util.Set;
 import rp1.rossum.RsPlan;
 import rp1.simulator.batch.Batch;
 import rp1.simulator.batch.ResultsCsv;
-import rp1.simulator.batch.RobotResult;
-import rp1.simulator.batch.Trail;
+import rp1.simulator.outcome.RobotResult;
+import rp1.simulator.outcome.Trail;
 import rp1.view.BoxPlot;
 import rp1.view.SweepPicture;
 

@@ -13,6 +13,7 @@ import rp1.rossum.RsConnection;
 import rp1.rossum.RsLogInterface;
 import rp1.rossum.RsPlan;
 import rp1.rossum.event.RsEvent;
+import rp1.simulator.noise.SplitMix;
 import rp1.simulator.scheduler.InputQueue;
 import rp1.simulator.scheduler.Interlock;
 import rp1.simulator.scheduler.Scheduler;

@@ -18,7 +18,7 @@ import rp1.io.WholeFiles;
 import rp1.rossum.RsPoint;
 import rp1.rossum.RsRectangle;
 import rp1.rossum.RsTransform;
-import rp1.simulator.batch.Trail;
+import rp1.simulator.outcome.Trail;
 import rp1.simulator.snapshot.WorldSnapshot;
 
 /** Pictures of the world drawn into images instead of a window; works with no display at all. */

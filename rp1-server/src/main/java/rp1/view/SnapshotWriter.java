@@ -11,8 +11,8 @@ import java.util.concurrent.TimeUnit;
 import rp1.io.IoFailures;
 import rp1.rossum.RsLogInterface;
 import rp1.simulator.Simulation;
-import rp1.simulator.batch.RunStatistics;
-import rp1.simulator.batch.Trail;
+import rp1.simulator.outcome.RunStatistics;
+import rp1.simulator.outcome.Trail;
 import rp1.simulator.snapshot.WorldSnapshot;
 
 /**

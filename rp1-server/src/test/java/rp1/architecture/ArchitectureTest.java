@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.function.Predicate;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -35,7 +36,7 @@ class ArchitectureTest {
      */
     private static final List<String> VIEW_MAY_USE = List.of(
             "rp1.simulator.Simulation", "rp1.simulator.snapshot", "rp1.simulator.config",
-            "rp1.simulator.batch.RunStatistics", "rp1.simulator.batch.Trail");
+            "rp1.simulator.outcome.RunStatistics", "rp1.simulator.outcome.Trail");
     /**
      * The accessors of {@code Simulation} that hand out the model itself. The view reads the floor
      * plan (fixed for the run) through {@code getWorld().getPlan()} and nothing else of them.
@@ -116,6 +117,37 @@ class ArchitectureTest {
             found.addAll(modelAccess(name(file), Files.readAllLines(file, StandardCharsets.UTF_8)));
         }
         assertEquals("", String.join("\n", found), "the view reads the model through snapshots only");
+    }
+
+    @Test
+    void theServersPackagesUseEachOtherInOneDirectionOnly() throws IOException {
+        // A ring of packages (batch used launch, whose view hook used the view, which used batch's
+        // trails) is one piece that reads as several.
+        PackageGraph graph = new PackageGraph();
+        for (Path file : javaFiles("rp1")) {
+            String from = PackageGraph.packageOf(ROOT.relativize(file).toString()
+                    .replaceFirst("^rp1-server/src/main/java/", "").replace('/', '.'));
+            for (References.Reference r : References.in(name(file), Files.readAllLines(file, StandardCharsets.UTF_8))) {
+                if (r.isIn("rp1") && !r.isIn("rp1.rossum")) {
+                    graph.add(from, PackageGraph.packageOf(r.name()));
+                }
+            }
+        }
+        assertEquals(List.of(), graph.rings(), "packages of the server that use one another");
+    }
+
+    @Test
+    void aRingOfPackagesIsFoundAndPackagesAreReadOffQualifiedNames() {
+        PackageGraph graph = new PackageGraph();
+        graph.add("a", "b");
+        graph.add("b", "c");
+        graph.add("c", "a");
+        graph.add("c", "d");
+        graph.add("d", "d");
+        assertEquals(List.of(Set.of("a", "b", "c")), graph.rings());
+        assertEquals("rp1.simulator.world", PackageGraph.packageOf("rp1.simulator.world.Robot"));
+        assertEquals("rp1.simulator", PackageGraph.packageOf("rp1.simulator.Simulation.EventListener"));
+        assertEquals("rp1.view", PackageGraph.packageOf("rp1.view.*"));
     }
 
     @Test

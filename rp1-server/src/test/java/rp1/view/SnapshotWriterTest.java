@@ -101,7 +101,7 @@ class SnapshotWriterTest {
     void aPictureOfARunDrawsEachRobotsPathAndItsTimeUnderThePlan() throws Exception {
         RsPlan plan = rp1.planparser.RsPlanParser.parse("wall s { geometry: 0, 0, 4, 0, 0.02; }\n"
                 + "wall n { geometry: 0, 4, 4, 4, 0.02; }\n", "room");
-        rp1.simulator.batch.Trail path = new rp1.simulator.batch.Trail("r", List.of(new double[] {1.0, 1.0, 3.0, 1.0}));
+        rp1.simulator.outcome.Trail path = new rp1.simulator.outcome.Trail("r", List.of(new double[] {1.0, 1.0, 3.0, 1.0}));
         BufferedImage image = Pictures.renderCaptioned(new Renderer(plan),
                 rp1.simulator.snapshot.WorldSnapshot.planOnly(plan), List.of(path));
         java.awt.Dimension size = Pictures.sizeFor(plan.getBounds());

@@ -6,7 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import rp1.simulator.batch.Trail;
+import rp1.simulator.outcome.Trail;
 
 /**
  * What one run on an executor sends back to the driver in its task's result: its report and small

@@ -25,7 +25,7 @@ import org.apache.spark.SparkFiles;
 import rp1.simulator.batch.PropertiesText;
 import rp1.simulator.batch.RunEngine;
 import rp1.simulator.batch.SweepRun;
-import rp1.simulator.batch.Trail;
+import rp1.simulator.outcome.Trail;
 
 /**
  * One run of a sweep as a Spark task: the run's {@code run.ini} as the driver wrote it, and what the

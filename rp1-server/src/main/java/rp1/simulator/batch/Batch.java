@@ -37,6 +37,7 @@ import rp1.simulator.config.ServerConfig;
 import rp1.simulator.launch.ClientClassPath;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.StartupException;
+import rp1.simulator.outcome.Trail;
 
 /**
  * Runs a server's properties over every configuration of the varied keys ({@code --vary}), seed and

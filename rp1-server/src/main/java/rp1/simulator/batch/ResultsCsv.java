@@ -17,6 +17,7 @@ import java.util.Map;
 import java.util.Set;
 
 import rp1.io.WholeFiles;
+import rp1.simulator.outcome.RobotResult;
 
 /**
  * A sweep's {@code results.csv}: one row per run and robot, with a column per varied key and per

@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 
+import rp1.simulator.outcome.Trail;
+
 /**
  * Carries out a sweep's runs one way or another ({@code --isolation}, or one given by a
  * {@link Factory}, such as rp1-spark's, which runs them on a Spark cluster). Any thread; several

@@ -10,6 +10,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.regex.Pattern;
 
+import rp1.simulator.outcome.Trail;
+
 /**
  * A run's folder: written before the run (its {@code run.ini}, the user's properties with the run's
  * own keys after them, and its {@code --client} command), read after it (its trails). Nothing an

@@ -12,6 +12,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Properties;
 
+import rp1.simulator.outcome.RobotResult;
+
 /**
  * How one run of a sweep ended, as its process leaves it in {@code result.txt} for the sweep to read:
  * the simulated time it stopped at, why, the server's exit status, and every robot's results.

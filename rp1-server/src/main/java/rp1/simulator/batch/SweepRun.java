@@ -27,6 +27,9 @@ import rp1.simulator.launch.RunningServer;
 import rp1.simulator.launch.ServerLauncher;
 import rp1.simulator.launch.StartupException;
 import rp1.simulator.launch.ViewHook;
+import rp1.simulator.outcome.RobotResult;
+import rp1.simulator.outcome.RunStatistics;
+import rp1.simulator.outcome.Trail;
 
 /**
  * One run of a sweep: starts the server with {@code DIR/run.ini} (which the sweep wrote: the user's

@@ -8,6 +8,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
+import rp1.simulator.outcome.Trail;
+
 /**
  * The robots' trails of one run, as the run leaves them in {@code trails.txt} for the sweep's
  * summary picture: a line {@code robot NAME} per robot, then its pieces of path, each a line

@@ -2,7 +2,6 @@ package rp1.simulator.noise;
 
 import java.util.SplittableRandom;
 
-import rp1.simulator.SplitMix;
 
 /**
  * One stream of random draws for one quantity of one robot. Its seed is derived from the run's seed,

@@ -9,7 +9,7 @@ public final class WorldModel {
     /**
      * Raise it by one with every change that can make the same inputs give other events or another
      * end state: motion, collisions, sensors, placements, the order or timing of tasks. Version 2
-     * seeds the world's random source with the run's seed mixed ({@link rp1.simulator.SplitMix}).
+     * seeds the world's random source with the run's seed mixed ({@link rp1.simulator.noise.SplitMix}).
      */
     public static final int VERSION = 2;
 

@@ -13,6 +13,8 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import rp1.simulator.outcome.RobotResult;
+
 /** A run's result.txt: what the sweep reads back is what the run wrote, whatever its robots are called. */
 class RunReportTest {
 

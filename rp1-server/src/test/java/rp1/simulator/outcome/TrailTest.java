@@ -1,4 +1,4 @@
-package rp1.simulator.batch;
+package rp1.simulator.outcome;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;

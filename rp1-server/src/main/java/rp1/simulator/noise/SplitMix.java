@@ -1,4 +1,4 @@
-package rp1.simulator;
+package rp1.simulator.noise;
 
 /**
  * SplitMix64's finaliser: a bijection on 64-bit values under which seeds that differ in one bit give

@@ -1,4 +1,4 @@
-package rp1.simulator.batch;
+package rp1.simulator.outcome;
 
 import java.util.Collections;
 import java.util.LinkedHashMap;

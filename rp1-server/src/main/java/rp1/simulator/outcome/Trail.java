@@ -1,4 +1,4 @@
-package rp1.simulator.batch;
+package rp1.simulator.outcome;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -129,7 +129,7 @@ public record Trail(String robot, List<double[]> pieces) {
     }
 
     /** A piece of path from its coordinates {@code x0, y0, x1, y1, ...}. */
-    static double[] piece(List<Double> xy) {
+    public static double[] piece(List<Double> xy) {
         double[] out = new double[xy.size()];
         for (int i = 0; i < out.length; i++) {
             out[i] = xy.get(i);
