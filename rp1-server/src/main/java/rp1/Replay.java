@@ -11,6 +11,7 @@ import rp1.io.IoFailures;
 import rp1.io.WholeFiles;
 import rp1.rossum.RsLogAdapter;
 import rp1.rossum.RsLogInterface;
+import rp1.simulator.config.Suggestion;
 import rp1.simulator.outcome.RunStatistics;
 import rp1.simulator.record.Recording;
 import rp1.simulator.record.RecordingException;
@@ -210,8 +211,9 @@ public final class Replay {
                     case "--until" -> o.until = time(value(args, ++i, "--until"));
                     default -> {
                         if (args[i].startsWith("-") || o.recording != null) {
-                            throw new IllegalArgumentException((args[i].startsWith("-") ? "unknown option "
-                                    : "unexpected argument ") + args[i]);
+                            throw new IllegalArgumentException(args[i].startsWith("-") ? "unknown option " + args[i]
+                                    + Suggestion.didYouMean(args[i], Suggestion.optionsIn(OPTIONS))
+                                    : "unexpected argument " + args[i]);
                         }
                         o.recording = Paths.get(args[i]);
                     }

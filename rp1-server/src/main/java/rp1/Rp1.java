@@ -8,6 +8,7 @@ import java.util.Map;
 
 import rp1.simulator.config.ConfigException;
 import rp1.simulator.config.ServerArguments;
+import rp1.simulator.config.Suggestion;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.ServerMain;
 
@@ -24,6 +25,9 @@ import rp1.simulator.launch.ServerMain;
  * it asks for one and there is a display, headless otherwise.
  */
 public final class Rp1 {
+    /** The commands besides the simulator itself. */
+    private static final List<String> COMMANDS = List.of("sweep", "replay", "cluster");
+
     /** The properties of the headless demo. */
     static final String HEADLESS_DEMO = "headless.ini";
 
@@ -53,9 +57,22 @@ public final class Rp1 {
             Sweep.main("rp1 sweep", rest);
         } else if (args.length > 0 && args[0].equals("replay")) {
             Replay.main("rp1 replay", rest);
+        } else if (args.length > 0 && misspeltCommand(args[0]) != null) {
+            System.err.println(misspeltCommand(args[0]));
+            System.exit(ExitStatus.STARTUP_FAILED);
         } else {
             System.exit(server(args, System.getenv(), System.err));
         }
+    }
+
+    /**
+     * For a word that is a slip of a command's name, what to tell the user ("rp1: unknown command swep;
+     * did you mean rp1 sweep?" and the usage); else null. Without it the simulator would take the word
+     * for a stray argument of its own.
+     */
+    static String misspeltCommand(String word) {
+        String meant = Suggestion.nearest(word, COMMANDS);
+        return meant == null ? null : "rp1: unknown command " + word + "; did you mean rp1 " + meant + "?\n" + USAGE;
     }
 
     /** Runs the simulator as {@link #serverArguments} says; returns the exit status. */

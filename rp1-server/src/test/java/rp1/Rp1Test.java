@@ -72,6 +72,15 @@ class Rp1Test {
     }
 
     @Test
+    void aCommandMisspeltIsNamedAsMeantAndAnythingElseIsLeftToTheSimulator() {
+        assertTrue(Rp1.misspeltCommand("swep").startsWith("rp1: unknown command swep; did you mean rp1 sweep?\nusage: rp1 "));
+        assertTrue(Rp1.misspeltCommand("Replay").startsWith("rp1: unknown command Replay; did you mean rp1 replay?\n"));
+        assertEquals(null, Rp1.misspeltCommand("-p"));
+        assertEquals(null, Rp1.misspeltCommand("--headless"));
+        assertEquals(null, Rp1.misspeltCommand("mybot.ini"), "no slip of a command: the simulator says what is wrong");
+    }
+
+    @Test
     void aSweepOrReplayStartedByRp1NamesItsCommandInItsUsage() {
         String sweep = Sweep.usage("rp1 sweep");
         assertTrue(sweep.startsWith("usage: rp1 sweep -p PROPERTIES"), sweep);

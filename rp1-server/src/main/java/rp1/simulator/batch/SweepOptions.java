@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Set;
 
 import rp1.simulator.config.ServerArguments;
+import rp1.simulator.config.Suggestion;
 
 /**
  * A sweep's command line: {@code -p FILE.ini --seeds 1-16 [--vary KEY=V1,V2 ...] [--plans a.txt,b.txt]
@@ -153,7 +154,9 @@ public final class SweepOptions {
                 case "--isolation" -> isolation = isolation(value(args, ++i, a));
                 case "--client" -> client = client(value(args, ++i, a));
                 case "--pictures" -> pictures = true;
-                default -> throw new IllegalArgumentException((a.startsWith("-") ? "unknown option " : "unexpected argument ") + a);
+                default -> throw new IllegalArgumentException(a.startsWith("-")
+                        ? "unknown option " + a + Suggestion.didYouMean(a, Suggestion.optionsIn(OPTIONS))
+                        : "unexpected argument " + a);
             }
         }
         List<String> missing = new ArrayList<>();

@@ -68,8 +68,9 @@ public final class ServerArguments {
                 case "-cp", "-classpath", "--classpath" -> classPath.addAll(entries(value(args, ++i,
                         flag + " needs a class path (folders and jars separated by '" + File.pathSeparator + "')")));
                 case "-h", "--help" -> help = true;
-                default -> throw new ConfigException((flag.startsWith("-") ? "unknown option " : "unexpected argument ")
-                        + flag + "\n" + USAGE);
+                default -> throw new ConfigException((flag.startsWith("-") ? "unknown option " + flag
+                        + Suggestion.didYouMean(flag, Suggestion.optionsIn(USAGE)) : "unexpected argument " + flag)
+                        + "\n" + USAGE);
             }
         }
         return new ServerArguments(p, f, help, port, headless, classPath);

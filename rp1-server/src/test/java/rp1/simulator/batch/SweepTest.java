@@ -60,6 +60,12 @@ class SweepTest {
     }
 
     @Test
+    void aMistypedOptionIsNamedWithTheOneItWasMeantToBe() {
+        assertEquals(1, sweep("-p", "x.ini", "--sed", "1", "--out", dir.resolve("out").toString()));
+        assertTrue(sweeps.err().startsWith("rp1.Sweep: unknown option --sed; did you mean --seeds?\n"), sweeps.err());
+    }
+
+    @Test
     void propertiesThatLoadNoRobotAreRefused() throws Exception {
         Path p = write("none.ini", "floorPlanFileName=" + dir.resolve("x.txt"), "maxSimulationTime=10");
         assertEquals(1, sweep("-p", p.toString(), "--seeds", "1", "--out", dir.resolve("out").toString()));
