@@ -175,7 +175,8 @@ public final class Batch {
             }
             RunEngine engine = options.isolation == SweepOptions.Isolation.PROCESS
                     ? RunEngine.inProcesses(options.timeoutSeconds, classPath)
-                    : new LoaderRuns(new ArrayList<>(robotClasses), robots, options.timeoutSeconds);
+                    : new LoaderRuns(new ArrayList<>(robotClasses), robots, options.timeoutSeconds,
+                            () -> RunEngine.inProcesses(options.timeoutSeconds, classPath));
             return new Batch(options, out, found.text, plans, runs, spec, kept, classPath, engine);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());

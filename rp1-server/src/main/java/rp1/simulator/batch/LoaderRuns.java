@@ -6,6 +6,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Supplier;
 
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.RunningServer;
@@ -23,12 +24,23 @@ import rp1.simulator.launch.RunningServer;
  * ({@link StaticState}), a class is the same in every run, and the runs after the first share one
  * loader: the robot's classes are defined, verified and linked once more, and its code is compiled
  * once instead of being interpreted again in every run.
+ *
+ * <p>A run whose robot holds a thread that cannot be ended when the run stops (a handler looping
+ * around {@code catch (Throwable t)}: {@link RunningServer#threadsLeftRunning}) leaves it computing in
+ * this process, and every later run like it would add one. So a sweep's runs after it are carried out
+ * in processes of their own, as {@code --isolation process} would, with the same results; the sweep's
+ * last line says so.
  */
 final class LoaderRuns implements RunEngine {
     private final RunClassLoader.Source classes;
     private final double timeoutSeconds;
     private final Set<RunningServer> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
+    /** Makes the engine the runs go on with once a run left a thread running; null: none (a Spark task's one run). */
+    private final Supplier<RunEngine> afterStuck;
+    /** That engine, once made; and the line that says why. */
+    private RunEngine instead;
+    private String insteadNote;
 
     /**
      * Whether the runs share one loader, worked out when a second run starts: an engine that carries
@@ -42,9 +54,32 @@ final class LoaderRuns implements RunEngine {
     private record Sharing(RunClassLoader loader, String note) {
     }
 
-    LoaderRuns(List<String> robotClasses, ClassLoader parent, double timeoutSeconds) {
+    /**
+     * @param afterStuck makes the engine for the runs after one that left a thread running (null: go
+     *                   on in this process)
+     */
+    LoaderRuns(List<String> robotClasses, ClassLoader parent, double timeoutSeconds, Supplier<RunEngine> afterStuck) {
         this.classes = RunClassLoader.source(robotClasses, parent);
         this.timeoutSeconds = timeoutSeconds;
+        this.afterStuck = afterStuck;
+    }
+
+    /** The engine the runs go on with instead of this process, or null while they stay here. */
+    private synchronized RunEngine instead() {
+        return instead;
+    }
+
+    /** The run left threads running: the runs after it go elsewhere, if there is an elsewhere. */
+    private synchronized void leftRunning(Batch.Run run, List<String> threads) {
+        if (instead != null || afterStuck == null) {
+            return;
+        }
+        instead = afterStuck.get();
+        insteadNote = "the runs after " + run.dir().getFileName() + " went in processes of their own: it left "
+                + threads.get(0).replaceFirst(": still running .*", "") + " running, which could not be stopped";
+        if (stopping) {
+            instead.stopAll();
+        }
     }
 
     /** The loader this run shares with others, or null if it has one of its own. */
@@ -69,6 +104,10 @@ final class LoaderRuns implements RunEngine {
 
     @Override
     public Ran run(Batch.Run run) throws IOException, InterruptedException {
+        RunEngine elsewhere = instead();
+        if (elsewhere != null) {
+            return elsewhere.run(run);
+        }
         Thread thread = Thread.currentThread();
         ClassLoader before = thread.getContextClassLoader();
         AtomicReference<RunningServer> mine = new AtomicReference<>();
@@ -85,6 +124,9 @@ final class LoaderRuns implements RunEngine {
                     server.requestStop(ExitStatus.OK);
                 }
             }, timeoutSeconds);
+            if (mine.get() != null && !mine.get().threadsLeftRunning().isEmpty()) {
+                leftRunning(run, mine.get().threadsLeftRunning());
+            }
             return new Ran(report, here.trails());
         } finally {
             thread.setContextClassLoader(before);
@@ -99,6 +141,9 @@ final class LoaderRuns implements RunEngine {
 
     @Override
     public synchronized void close() {
+        if (instead != null) {
+            instead.close();
+        }
         // The shared loader's classes stay usable (a loaded class needs no open jar); only its jars
         // and the loader's own resources are let go. The note stays for the sweep's last line.
         if (sharing != null && sharing.loader() != null) {
@@ -112,7 +157,8 @@ final class LoaderRuns implements RunEngine {
 
     @Override
     public synchronized String note() {
-        return sharing == null ? null : sharing.note();
+        String shared = sharing == null ? null : sharing.note();
+        return insteadNote == null ? shared : shared == null ? insteadNote : shared + "; " + insteadNote;
     }
 
     @Override
@@ -124,5 +170,9 @@ final class LoaderRuns implements RunEngine {
     public void stopAll() {
         stopping = true;
         running.forEach(s -> s.requestStop(ExitStatus.OK));
+        RunEngine elsewhere = instead();
+        if (elsewhere != null) {
+            elsewhere.stopAll();
+        }
     }
 }

@@ -57,7 +57,7 @@ public interface RunEngine extends AutoCloseable {
      * @param robotClasses the robots' classes (dlcName), found through {@code parent}
      */
     static RunEngine inThisProcess(List<String> robotClasses, ClassLoader parent, double timeoutSeconds) {
-        return new LoaderRuns(robotClasses, parent, timeoutSeconds);
+        return new LoaderRuns(robotClasses, parent, timeoutSeconds, null);
     }
 
     /**

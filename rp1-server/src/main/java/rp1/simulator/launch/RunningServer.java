@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.OptionalInt;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -46,6 +47,8 @@ public final class RunningServer {
     private volatile int exitStatus = ExitStatus.OK;
     private volatile String stopReason = "running";
     private volatile AutoCloseable view = () -> { };
+    /** What {@link #threadsLeftRunning} returns. */
+    private final List<String> leftRunning = new CopyOnWriteArrayList<>();
 
     /** What {@link ServerLauncher} built, handed over to run. */
     static final class Parts {
@@ -344,6 +347,7 @@ public final class RunningServer {
             }
             for (String line : stuck) {
                 parts.log.important("The simulation's task did not end when the run stopped: " + line);
+                noteIfLeftRunning(line);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -358,10 +362,25 @@ public final class RunningServer {
         try {
             for (String line : StuckThreads.end(parts.launcher.threads(), GRACE_MILLIS)) {
                 parts.log.important("A loaded client's thread did not end with the run: " + line);
+                noteIfLeftRunning(line);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+    }
+
+    private void noteIfLeftRunning(String line) {
+        if (StuckThreads.stillRunning(line)) {
+            leftRunning.add(line);
+        }
+    }
+
+    /**
+     * The threads of the run's robots that could not be ended when it stopped (each as its log line
+     * says it): they keep computing in this process. Empty for a run that has not stopped, or left none.
+     */
+    public List<String> threadsLeftRunning() {
+        return List.copyOf(leftRunning);
     }
 
     /** Closes the view; a picture it could not write is added to {@code outputFailures}. */

@@ -11,10 +11,14 @@ import java.util.concurrent.TimeUnit;
  * --isolation loader}) or a Spark task they would keep a processor busy through every run after, and
  * a stopped run would wait for them. So each thread is given what is left of a grace period to end by
  * itself, then interrupted (a thread asleep or waiting ends), then, still alive, stopped with {@link
- * Thread#stop()}, which Java 17 still carries out (a later Java refuses, and the thread is reported as
- * still running).
+ * Thread#stop()}, which Java 17 still carries out. A thread that catches the stop (a loop around
+ * {@code catch (Throwable t)}) or a later Java, which refuses to stop threads, leaves it running: the
+ * caller is told, so that a sweep can carry its later runs out in processes of their own.
  */
 final class StuckThreads {
+    /** How a line of {@link #end} says a thread could not be ended. */
+    static final String STILL_RUNNING = "still running";
+
     /** How long an interrupted, then a stopped, thread is given to end. */
     static final long AFTER_EACH_STEP_MILLIS = 500;
 
@@ -26,7 +30,8 @@ final class StuckThreads {
      * still alive as the class comment says.
      *
      * @return one line per thread that did not end by itself: its name, where it was, and how it ended
-     *         ("ended when interrupted", "stopped", or "still running")
+     *         ("ended when interrupted", "stopped", or "still running" and why: it caught the stop, or
+     *         this Java does not stop threads)
      */
     static List<String> end(List<Thread> threads, long graceMillis) throws InterruptedException {
         List<Thread> alive = joinAll(threads, graceMillis);
@@ -39,18 +44,24 @@ final class StuckThreads {
             t.interrupt();
         }
         List<Thread> unmoved = joinAll(alive, AFTER_EACH_STEP_MILLIS);
+        boolean refused = false;
         for (Thread t : unmoved) {
-            stop(t);
+            refused |= !stop(t);
         }
         List<Thread> unstoppable = joinAll(unmoved, AFTER_EACH_STEP_MILLIS);
         List<String> lines = new ArrayList<>();
         for (int i = 0; i < alive.size(); i++) {
             Thread t = alive.get(i);
-            String how = unstoppable.contains(t) ? "still running (this Java does not stop threads)"
-                    : unmoved.contains(t) ? "stopped" : "ended when interrupted";
+            String how = unstoppable.contains(t) ? STILL_RUNNING + (refused ? " (this Java does not stop threads)"
+                    : " (it caught the stop)") : unmoved.contains(t) ? "stopped" : "ended when interrupted";
             lines.add(where.get(i) + ": " + how);
         }
         return lines;
+    }
+
+    /** Whether a line of {@link #end} is about a thread that could not be ended. */
+    static boolean stillRunning(String line) {
+        return line.contains(": " + STILL_RUNNING + " (");
     }
 
     /** The threads still alive once each has been waited for, all within {@code millis}. */
@@ -89,12 +100,14 @@ final class StuckThreads {
     // Thread.stop is deprecated because the stopped thread's locks are let go with its objects half
     // changed. Here those objects are the run's own, which nobody reads after it; the alternative is a
     // thread that computes for ever in a process that goes on with other runs.
+    /** Stops the thread; false if this Java refuses to (after Java 19). */
     @SuppressWarnings({"deprecation", "removal"})
-    private static void stop(Thread t) {
+    private static boolean stop(Thread t) {
         try {
             t.stop();
+            return true;
         } catch (UnsupportedOperationException e) {
-            // A Java after 19: the thread is reported as still running.
+            return false;
         }
     }
 }

@@ -145,6 +145,32 @@ class SweepTest {
     }
 
     @Test
+    void aRobotThatCatchesTheStopSendsTheRunsAfterItToProcessesOfTheirOwn() throws Exception {
+        Path flag = write("keep-catching", "while this file is here");
+        Path p = properties("exitWhenClientsDone=true", "dlcName=" + CatchingDlc.class.getName(), "param.flag=" + flag);
+        try {
+            int status = sweep("-p", p.toString(), "--seeds", "1-3", "--jobs", "2", "--timeout", "1", "--out",
+                    dir.resolve("out").toString());
+            assertEquals(Sweep.RUN_FAILED, status, sweeps.out() + sweeps.err());
+            List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
+            assertEquals(4, rows.size(), rows.toString());
+            for (String row : rows.subList(1, 4)) {
+                assertTrue(row.contains(",124,timeout: still running after 1 s of wall time,"), row);
+            }
+            // The first run goes alone in the sweep's process; the two after it, each in a process of its own.
+            assertTrue(Files.notExists(dir.resolve("out/runs/1-home/" + ProcessRuns.OUTPUT)));
+            assertTrue(Files.exists(dir.resolve("out/runs/2-home/" + ProcessRuns.OUTPUT)));
+            assertTrue(Files.exists(dir.resolve("out/runs/3-home/" + ProcessRuns.OUTPUT)));
+            assertTrue(sweeps.out().contains("the runs after 1-home went in processes of their own: it left thread"
+                    + " \"scheduler\" in " + CatchingDlc.class.getName()), sweeps.out());
+            assertTrue(Files.readString(dir.resolve("out/runs/1-home/server.log")).contains(": still running (it caught"
+                    + " the stop)\n"));
+        } finally {
+            Files.delete(flag);
+        }
+    }
+
+    @Test
     void aRunsFolderIsNamedAfterItsPlanWithoutTheEndingOfAPlanOrAMap() {
         assertEquals("contest", Batch.stem("FloorPlans/contest.txt"));
         assertEquals("rooms", Batch.stem("maps/rooms.yaml"), "a map's plan too");
