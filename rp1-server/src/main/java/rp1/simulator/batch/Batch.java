@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.Collections;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -16,6 +17,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -175,14 +177,32 @@ public final class Batch {
             }
             RunEngine engine = options.isolation == SweepOptions.Isolation.PROCESS
                     ? RunEngine.inProcesses(options.timeoutSeconds, classPath)
-                    : new LoaderRuns(new ArrayList<>(robotClasses), robots, options.timeoutSeconds,
-                            () -> RunEngine.inProcesses(options.timeoutSeconds, classPath));
+                    : inThisProcess(robotClasses, robots, options.timeoutSeconds, classPath);
             return new Batch(options, out, found.text, plans, runs, spec, kept, classPath, engine);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());
         } catch (StartupException e) {
             throw new SweepException("-cp: " + e.getMessage());
         }
+    }
+
+    /**
+     * The engine for --isolation loader: the runs in this process, unless a class of the robot's calls
+     * System.exit, which would end them all at once: then in processes of their own, as --isolation
+     * process would, with the same results. The runs after one whose robot left a thread running also
+     * go to processes of their own ({@link LoaderRuns}).
+     */
+    private static RunEngine inThisProcess(Collection<String> robotClasses, ClassLoader robots, double timeoutSeconds,
+                                           List<Path> classPath) {
+        LoaderRuns here = new LoaderRuns(new ArrayList<>(robotClasses), robots, timeoutSeconds,
+                () -> RunEngine.inProcesses(timeoutSeconds, classPath));
+        Optional<String> exits = here.exitCall();
+        if (exits.isEmpty()) {
+            return here;
+        }
+        here.close();
+        return new ProcessRuns(timeoutSeconds, classPath, "each run went in a process of its own: " + exits.get()
+                + ", which would end every run in the sweep's process at once");
     }
 
     /**

@@ -64,6 +64,14 @@ final class LoaderRuns implements RunEngine {
         this.afterStuck = afterStuck;
     }
 
+    /**
+     * The first of the robot's classes that calls System.exit or the like, as "CLASS calls
+     * System.exit", which would end every run in this process at once; empty if none does.
+     */
+    Optional<String> exitCall() {
+        return classes.exitCall();
+    }
+
     /** The engine the runs go on with instead of this process, or null while they stay here. */
     private synchronized RunEngine instead() {
         return instead;

@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.stream.Collectors;
 
+import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.JavaCommand;
 
 /**
@@ -39,11 +40,23 @@ final class ProcessRuns implements RunEngine {
     /** The robot's classes ({@code -cp}), absolute, handed to each run's process. */
     private final List<Path> classPath;
     private final Set<Process> running = ConcurrentHashMap.newKeySet();
+    private final String note;
     private volatile boolean stopping;
 
     ProcessRuns(double timeoutSeconds, List<Path> classPath) {
+        this(timeoutSeconds, classPath, null);
+    }
+
+    /** @param note what the sweep's last line says of how the runs went, or null */
+    ProcessRuns(double timeoutSeconds, List<Path> classPath, String note) {
         this.timeoutSeconds = timeoutSeconds;
         this.classPath = List.copyOf(classPath);
+        this.note = note;
+    }
+
+    @Override
+    public String note() {
+        return note;
     }
 
     private static List<String> jvmOptions() {
@@ -143,7 +156,17 @@ final class ProcessRuns implements RunEngine {
         }
     }
 
-    private static RunReport report(Path dir, int status) {
-        return RunReport.ofProcess(dir, dir.resolve(OUTPUT), status);
+    /**
+     * The run's report, as its process wrote it; a failure if the process, not stopped by the sweep,
+     * ended with another status than a report of a run that went as asked (the robot called
+     * System.exit before the run could say so).
+     */
+    private RunReport report(Path dir, int status) {
+        RunReport report = RunReport.ofProcess(dir, dir.resolve(OUTPUT), status);
+        if (!stopping && report.succeeded() && status != ExitStatus.OK) {
+            return RunReport.failed("client failed: the run's process ended with status " + status
+                    + " where the run ended as asked (System.exit in the robot?)", ExitStatus.CLIENT_FAILED);
+        }
+        return report;
     }
 }

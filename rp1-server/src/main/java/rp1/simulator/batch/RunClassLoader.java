@@ -14,6 +14,9 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.security.CodeSigner;
 import java.security.CodeSource;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -68,6 +71,8 @@ final class RunClassLoader extends URLClassLoader {
         /** More classes than this on the runs' class path are not looked through for static state. */
         private static final int MAX_CLASSES_LOOKED_THROUGH = 2000;
         private final URL[] urls;
+        /** The robots' classes (dlcName). */
+        private final List<String> roots;
         private final Set<URL> shared;
         private final ClassLoader parent;
         private final Map<String, Boolean> sharedNames = new ConcurrentHashMap<>();
@@ -87,7 +92,8 @@ final class RunClassLoader extends URLClassLoader {
         private record Location(CodeSource codeSource, Manifest manifest) {
         }
 
-        private Source(URL[] urls, Set<URL> shared, ClassLoader parent) {
+        private Source(URL[] urls, Set<URL> shared, ClassLoader parent, List<String> roots) {
+            this.roots = List.copyOf(roots);
             this.urls = urls;
             this.shared = shared;
             this.parent = parent;
@@ -105,6 +111,37 @@ final class RunClassLoader extends URLClassLoader {
          */
         Optional<String> staticState() {
             return StaticState.find(List.of(urls), MAX_CLASSES_LOOKED_THROUGH);
+        }
+
+        /**
+         * Where the robot's code ends the process ({@link StaticState.Calls}): the robots' classes are
+         * read, then every class of the runs' class path that they refer to, and so on, as "CLASS.METHOD
+         * calls System.exit"; empty if none does, or if more classes than a sweep looks through are
+         * reached. Only what a robot can reach counts: a class path often holds other programs too.
+         */
+        Optional<String> exitCall() {
+            Deque<String> todo = new ArrayDeque<>(roots);
+            Set<String> seen = new HashSet<>(roots);
+            for (int looked = 0; !todo.isEmpty() && looked < MAX_CLASSES_LOOKED_THROUGH; looked++) {
+                URL at = find(todo.pop().replace('.', '/') + ".class");
+                if (at == null) {
+                    continue; // the library's, the simulator's or the platform's
+                }
+                try {
+                    StaticState.Calls calls = StaticState.calls(contents(at));
+                    if (calls.exit().isPresent()) {
+                        return calls.exit();
+                    }
+                    for (String name : calls.classes()) {
+                        if (seen.add(name)) {
+                            todo.add(name);
+                        }
+                    }
+                } catch (IOException | RuntimeException e) {
+                    // A class file that cannot be read fails its run when it is loaded, which says why.
+                }
+            }
+            return Optional.empty();
         }
 
         /** The platform's classes, and classes of the library and the simulator wherever they are found. */
@@ -202,7 +239,7 @@ final class RunClassLoader extends URLClassLoader {
         }
         urls.removeAll(shared);
         shared.remove(null);
-        return new Source(urls.toArray(new URL[0]), Set.copyOf(shared), parent);
+        return new Source(urls.toArray(new URL[0]), Set.copyOf(shared), parent, classNames);
     }
 
     /** Where a class was loaded from (its folder or jar), or null if that is unknown. */

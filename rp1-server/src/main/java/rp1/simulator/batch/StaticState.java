@@ -8,8 +8,13 @@ import java.net.URISyntaxException;
 import java.net.URL;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.function.Function;
 import java.util.jar.JarEntry;
 import java.util.jar.JarFile;
 import java.util.stream.Stream;
@@ -43,7 +48,13 @@ final class StaticState {
      * count as state: looking through them all would cost more than it could save.
      */
     static Optional<String> find(List<URL> locations, int maxClasses) {
-        Optional<String> tooMany = Optional.of("one of more than " + maxClasses + " classes (not looked through)");
+        return first(locations, maxClasses, Optional.of("one of more than " + maxClasses + " classes (not looked"
+                + " through)"), StaticState::state);
+    }
+
+    /** What {@code check} finds first in the class files of {@code locations}, or {@code tooMany}. */
+    private static Optional<String> first(List<URL> locations, int maxClasses, Optional<String> tooMany,
+                                          Function<byte[], Optional<String>> check) {
         int listed = 0;
         try {
             for (URL u : locations) {
@@ -59,7 +70,7 @@ final class StaticState {
                         return tooMany;
                     }
                     for (Path f : files) {
-                        Optional<String> found = state(Files.readAllBytes(f));
+                        Optional<String> found = check.apply(Files.readAllBytes(f));
                         if (found.isPresent()) {
                             return found;
                         }
@@ -74,7 +85,7 @@ final class StaticState {
                         }
                         for (JarEntry e : entries) {
                             try (InputStream in = jar.getInputStream(e)) {
-                                Optional<String> found = state(in.readAllBytes());
+                                Optional<String> found = check.apply(in.readAllBytes());
                                 if (found.isPresent()) {
                                     return found;
                                 }
@@ -175,6 +186,138 @@ final class StaticState {
             }
         }
         return Optional.empty();
+    }
+
+    /**
+     * What a class file tells of the process's end: where its code calls {@code System.exit},
+     * {@code Runtime.exit} or {@code Runtime.halt} ("CLASS.METHOD calls System.exit", a {@code main}
+     * method left out), and the classes it refers to, as binary names.
+     */
+    record Calls(Optional<String> exit, Set<String> classes) {
+    }
+
+    /** "CLASS.METHOD calls System.exit" if this class file's code ends the process, else empty. */
+    static Optional<String> exitCallIn(byte[] classFile) throws IOException {
+        return calls(classFile).exit();
+    }
+
+    /** {@link Calls} of a class file. */
+    static Calls calls(byte[] classFile) throws IOException {
+        DataInputStream in = new DataInputStream(new ByteArrayInputStream(classFile));
+        if (in.readInt() != 0xCAFEBABE) {
+            throw new IOException("not a class file");
+        }
+        in.readUnsignedShort();
+        in.readUnsignedShort();
+        int count = in.readUnsignedShort();
+        String[] utf8 = new String[count];
+        // For a class entry its name's index; for a method or name-and-type entry, its two indexes.
+        int[] first = new int[count];
+        int[] second = new int[count];
+        int[] tags = new int[count];
+        for (int i = 1; i < count; i++) {
+            int tag = in.readUnsignedByte();
+            tags[i] = tag;
+            switch (tag) {
+                case 1 -> utf8[i] = in.readUTF();
+                case 7 -> first[i] = in.readUnsignedShort();
+                case 10, 11, 12 -> {
+                    first[i] = in.readUnsignedShort();
+                    second[i] = in.readUnsignedShort();
+                }
+                case 8, 16, 19, 20 -> in.readUnsignedShort();
+                case 15 -> in.skipNBytes(3);
+                case 3, 4, 9, 17, 18 -> in.skipNBytes(4);
+                case 5, 6 -> {
+                    in.skipNBytes(8);
+                    i++;
+                }
+                default -> throw new IOException("constant pool tag " + tag);
+            }
+        }
+        in.readUnsignedShort();
+        String self = utf8[first[in.readUnsignedShort()]];
+        in.readUnsignedShort();
+        in.skipNBytes(2L * in.readUnsignedShort());
+        Set<String> classes = new LinkedHashSet<>();
+        for (int i = 1; i < count; i++) {
+            if (tags[i] == 7) {
+                String name = utf8[first[i]].replaceFirst("^\\[+L?", "").replaceFirst(";$", "");
+                if (name.contains("/") || name.length() > 1) {
+                    classes.add(name.replace('/', '.'));
+                }
+            }
+        }
+        // The entries that name a method ending the process.
+        Map<Integer, String> exits = new HashMap<>();
+        for (int i = 1; i < count; i++) {
+            if (tags[i] == 10 || tags[i] == 11) {
+                String owner = utf8[first[first[i]]];
+                String name = utf8[first[second[i]]];
+                if (("java/lang/System".equals(owner) && "exit".equals(name))
+                        || ("java/lang/Runtime".equals(owner) && ("exit".equals(name) || "halt".equals(name)))) {
+                    exits.put(i, owner.substring("java/lang/".length()) + "." + name);
+                }
+            }
+        }
+        if (exits.isEmpty()) {
+            return new Calls(Optional.empty(), classes);
+        }
+        skipMembers(in);
+        int methods = in.readUnsignedShort();
+        for (int m = 0; m < methods; m++) {
+            in.readUnsignedShort();
+            String name = utf8[in.readUnsignedShort()];
+            String descriptor = utf8[in.readUnsignedShort()];
+            // A main method is the robot's way to run on its own, over the network; a run never calls it.
+            boolean main = name.equals("main") && descriptor.equals("([Ljava/lang/String;)V");
+            int attributes = in.readUnsignedShort();
+            for (int a = 0; a < attributes; a++) {
+                String attribute = utf8[in.readUnsignedShort()];
+                byte[] body = in.readNBytes(in.readInt());
+                if (!main && attribute.equals("Code")) {
+                    String call = invoked(body, exits);
+                    if (call != null) {
+                        return new Calls(Optional.of(self.replace('/', '.') + "." + name + " calls " + call), classes);
+                    }
+                }
+            }
+        }
+        return new Calls(Optional.empty(), classes);
+    }
+
+    /** Skips a class file's fields (or any list of members laid out as they are). */
+    private static void skipMembers(DataInputStream in) throws IOException {
+        int members = in.readUnsignedShort();
+        for (int f = 0; f < members; f++) {
+            in.skipNBytes(6);
+            int attributes = in.readUnsignedShort();
+            for (int a = 0; a < attributes; a++) {
+                in.readUnsignedShort();
+                in.skipNBytes(in.readInt() & 0xFFFFFFFFL);
+            }
+        }
+    }
+
+    /**
+     * Which of {@code methods} (by constant pool index) the code of a Code attribute invokes, or null.
+     * The bytes are searched for an invoke instruction and its index rather than decoded one
+     * instruction after another: an operand that happens to read so counts too, which at worst sends a
+     * sweep's runs to processes of their own.
+     */
+    private static String invoked(byte[] codeAttribute, Map<Integer, String> methods) {
+        int length = ((codeAttribute[4] & 0xFF) << 24) | ((codeAttribute[5] & 0xFF) << 16)
+                | ((codeAttribute[6] & 0xFF) << 8) | (codeAttribute[7] & 0xFF);
+        for (int i = 8; i + 2 < 8 + length && i + 2 < codeAttribute.length; i++) {
+            int op = codeAttribute[i] & 0xFF;
+            if (op == 0xB6 || op == 0xB8 || op == 0xB7) {
+                String call = methods.get(((codeAttribute[i + 1] & 0xFF) << 8) | (codeAttribute[i + 2] & 0xFF));
+                if (call != null) {
+                    return call;
+                }
+            }
+        }
+        return null;
     }
 
     /** A primitive or a string. */

@@ -10,8 +10,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -21,6 +23,7 @@ import rp1.io.IoFailures;
 import rp1.simulator.Simulation;
 import rp1.simulator.config.ServerArguments;
 import rp1.simulator.launch.ClientClassPath;
+import rp1.simulator.launch.ExitCaller;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.LaunchOptions;
 import rp1.simulator.launch.RunningServer;
@@ -72,7 +75,8 @@ public final class SweepRun {
         // Stopped by the sweep (a timeout, the sweep interrupted: SIGTERM), even while it starts, the
         // run still closes its recording and event log before the process ends.
         CompletableFuture<RunningServer> started = new CompletableFuture<>();
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnceStarted(started), "stop the run"));
+        CountDownLatch reported = new CountDownLatch(1);
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnceStarted(started, reported), "stop the run"));
         // A sweep killed outright (SIGKILL) stops nothing: a run whose sweep is gone stops itself, as
         // stopped, rather than run on for ever re-parented to init.
         ProcessHandle.current().parent().ifPresent(sweep -> sweep.onExit().thenRun(() -> System.exit(Interruption.STATUS)));
@@ -95,6 +99,7 @@ public final class SweepRun {
         } finally {
             started.complete(null);
         }
+        reported.countDown();
         System.exit(report.exitStatus());
     }
 
@@ -215,12 +220,22 @@ public final class SweepRun {
         return out;
     }
 
-    /** The shutdown hook: waits until the server has started (if it is starting), then stops it cleanly. */
-    private static void stopOnceStarted(CompletableFuture<RunningServer> started) {
+    /**
+     * The shutdown hook: waits until the server has started (if it is starting), then stops it cleanly
+     * (as failed if the robot called System.exit) and waits until the run's results are written,
+     * since the process ends when the hook returns.
+     */
+    private static void stopOnceStarted(CompletableFuture<RunningServer> started, CountDownLatch reported) {
         try {
             RunningServer server = started.get(START_WAIT_SECONDS, TimeUnit.SECONDS);
             if (server != null) {
-                server.stop();
+                Optional<String> exitCall = ExitCaller.outsideTheSimulator();
+                if (exitCall.isPresent()) {
+                    server.stopForExitCall(exitCall.get());
+                } else {
+                    server.stop();
+                }
+                reported.await(START_WAIT_SECONDS, TimeUnit.SECONDS);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -245,6 +245,19 @@ public final class RunningServer {
     }
 
     /**
+     * Stops the server because the process is exiting at a robot's call ({@link ExitCaller}): the run
+     * failed, as if the robot had thrown, and says where it called; waits until the server has stopped.
+     *
+     * @param where the robot's call, as {@link ExitCaller#outsideTheSimulator()} gives it
+     * @return the exit status, {@link ExitStatus#CLIENT_FAILED} unless the server was already stopping
+     */
+    public int stopForExitCall(String where) throws InterruptedException {
+        parts.log.important("A robot called System.exit in " + where + ": the run stops, and counts as failed");
+        requestStop(ExitStatus.CLIENT_FAILED, "client failed: called System.exit in " + where);
+        return awaitExit();
+    }
+
+    /**
      * Stops the server and waits until it has; returns its status: 0, unless it was already stopping
      * with another, or a loaded client (2) or a simulation task (70) failed during the run.
      */
@@ -338,12 +351,14 @@ public final class RunningServer {
         Scheduler tasks = parts.simulation.getScheduler();
         try {
             List<String> stuck = new ArrayList<>(StuckThreads.end(List.of(scheduler), GRACE_MILLIS));
-            if (!tasks.awaitIdle(stuck.isEmpty() ? GRACE_MILLIS : 0)) {
+            // A robot's handler that called System.exit holds the task until this stop is over.
+            boolean exiting = ExitCaller.isExiting(scheduler.getStackTrace());
+            if (!tasks.awaitIdle(stuck.isEmpty() && !exiting ? GRACE_MILLIS : 0)) {
                 Thread holder = tasks.runningTasks();
-                if (holder != null && holder != Thread.currentThread()) {
+                if (holder != null && holder != Thread.currentThread() && holder != scheduler) {
                     stuck.addAll(StuckThreads.end(List.of(holder), 0));
+                    tasks.awaitIdle(StuckThreads.AFTER_EACH_STEP_MILLIS);
                 }
-                tasks.awaitIdle(StuckThreads.AFTER_EACH_STEP_MILLIS);
             }
             for (String line : stuck) {
                 parts.log.important("The simulation's task did not end when the run stopped: " + line);

@@ -2,6 +2,7 @@ package rp1.simulator.launch;
 
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.Optional;
 
 import rp1.simulator.config.ConfigException;
 import rp1.simulator.config.ServerArguments;
@@ -64,7 +65,8 @@ public final class ServerMain {
 
     private static int stopQuietly(RunningServer server) {
         try {
-            return server.stop();
+            Optional<String> exitCall = ExitCaller.outsideTheSimulator();
+            return exitCall.isPresent() ? server.stopForExitCall(exitCall.get()) : server.stop();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             return ExitStatus.OK;

@@ -34,7 +34,15 @@ final class StuckThreads {
      *         this Java does not stop threads)
      */
     static List<String> end(List<Thread> threads, long graceMillis) throws InterruptedException {
-        List<Thread> alive = joinAll(threads, graceMillis);
+        // A thread in System.exit is waiting for the shutdown hooks, among them whoever called this:
+        // waiting for it would wait for ever, and stopping it would stop the process's exit.
+        List<Thread> others = new ArrayList<>();
+        for (Thread t : threads) {
+            if (!ExitCaller.isExiting(t.getStackTrace())) {
+                others.add(t);
+            }
+        }
+        List<Thread> alive = joinAll(others, graceMillis);
         if (alive.isEmpty()) {
             return List.of();
         }

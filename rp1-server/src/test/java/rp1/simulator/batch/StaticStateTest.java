@@ -140,6 +140,39 @@ class StaticStateTest {
                 of(Numbering.class));
     }
 
+    /** A robot that gives up the whole process when its run goes wrong. */
+    static final class Quitter {
+        private int bumps;
+        private final int id = 7;
+
+        void bumped() {
+            if (++bumps > 3) {
+                Runtime.getRuntime().halt(id);
+            }
+        }
+    }
+
+    /** A robot that also runs on its own over the network: its main exits when it cannot connect. */
+    static final class Standalone {
+        private int steps;
+
+        void step() {
+            steps++;
+        }
+
+        public static void main(String[] args) {
+            System.exit(args.length == 0 ? 1 : 0);
+        }
+    }
+
+    @Test
+    void aClassWhoseCodeEndsTheProcessIsNamedButAMainMethodIsNoRunsCode() throws IOException {
+        assertEquals(Optional.of(Quitter.class.getName() + ".bumped calls Runtime.halt"),
+                StaticState.exitCallIn(classFile(Quitter.class)));
+        assertEquals(Optional.empty(), StaticState.exitCallIn(classFile(Standalone.class)));
+        assertEquals(Optional.empty(), StaticState.exitCallIn(classFile(Counter.class)));
+    }
+
     @Test
     void enumsKeepStateOnlyInFieldsOfTheirConstantsThatCanChange() throws IOException {
         assertEquals(Optional.empty(), of(Plain.class));

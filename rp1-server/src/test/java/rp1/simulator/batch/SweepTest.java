@@ -170,6 +170,26 @@ class SweepTest {
         }
     }
 
+    @ParameterizedTest
+    @ValueSource(strings = {"loader", "process"})
+    void aRobotThatCallsSystemExitFailsItsRunAndEndsNoOtherRun(String isolation) throws Exception {
+        // In the sweep's own process it would end every run at once: its runs go to processes of their own.
+        Path p = properties("maxSimulationTime=30", "dlcName=" + ExitingDlc.class.getName());
+        int status = sweep("-p", p.toString(), "--seeds", "1-2", "--jobs", "2", "--isolation", isolation, "--out",
+                dir.resolve("out").toString());
+        assertEquals(Sweep.RUN_FAILED, status, sweeps.out() + sweeps.err());
+        List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
+        assertEquals(3, rows.size(), rows.toString());
+        for (String row : rows.subList(1, 3)) {
+            assertTrue(row.contains(",2,client failed: called System.exit in " + ExitingDlc.class.getName()
+                    + ".quit(ExitingDlc.java:"), row);
+        }
+        if (isolation.equals("loader")) {
+            assertTrue(sweeps.out().contains("each run went in a process of its own: " + ExitingDlc.class.getName()
+                    + ".quit calls System.exit, which would end every run in the sweep's process at once"), sweeps.out());
+        }
+    }
+
     @Test
     void aRunsFolderIsNamedAfterItsPlanWithoutTheEndingOfAPlanOrAMap() {
         assertEquals("contest", Batch.stem("FloorPlans/contest.txt"));
