@@ -4,8 +4,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Paths;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 
 /**
@@ -17,9 +15,7 @@ public class CatchingDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("catching");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
-        sendBodySpecification(body);
+        sendBodySpecification(Disc.named("catching", 0.1));
         String flag = getRunParameter("flag");
         addTimeoutEventHandler(e -> {
             while (Files.exists(Paths.get(flag))) {

@@ -2,8 +2,6 @@ package rp1.simulator.batch;
 
 import java.io.IOException;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 import rp1.rossum.event.RsTimeoutEvent;
 
@@ -12,9 +10,7 @@ public class ExitingDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("exiting");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
-        sendBodySpecification(body);
+        sendBodySpecification(Disc.named("exiting", 0.1));
         addTimeoutEventHandler(this::quit);
         sendPlacementRequest("home");
         sendTimeoutRequest(1.0);

@@ -2,8 +2,6 @@ package rp1.simulator.batch;
 
 import java.io.IOException;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 import rp1.rossum.RsMotion;
 
@@ -12,9 +10,7 @@ public class NumberingDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("Numbering");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.15));
-        sendBodySpecification(body);
+        sendBodySpecification(Disc.named("Numbering", 0.15));
         addPlacementEventHandler(e -> {
             reportRunResult("first", RsMotion.getNewContinuityID());
             shutdown();

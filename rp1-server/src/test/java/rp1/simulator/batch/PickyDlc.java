@@ -2,8 +2,6 @@ package rp1.simulator.batch;
 
 import java.io.IOException;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 
 /**
@@ -14,9 +12,7 @@ public class PickyDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("picky");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.15));
-        sendBodySpecification(body);
+        sendBodySpecification(Disc.named("picky", 0.15));
         addPlacementEventHandler(e -> {
             if (!e.valid) {
                 throw new Error("no placement \"home\" on this floor plan");

@@ -2,8 +2,6 @@ package rp1.simulator.batch;
 
 import java.io.IOException;
 
-import rp1.rossum.RsBody;
-import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsClient;
 
 /** A robot whose timeout handler, called by the simulation itself, computes for ever once it is placed. */
@@ -11,9 +9,7 @@ public class SpinningHandlerDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        RsBody body = new RsBody("spinning");
-        body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
-        sendBodySpecification(body);
+        sendBodySpecification(Disc.named("spinning", 0.1));
         addTimeoutEventHandler(e -> spin());
         sendPlacementRequest("home");
         sendTimeoutRequest(1.0);
