@@ -44,6 +44,17 @@ public final class RecordingReader {
     public static Recording read(Path path) throws RecordingException {
         String text;
         try {
+            if (Files.exists(path) && !Files.isRegularFile(path)) {
+                throw new RecordingException(path + ": not a recording (not a file)");
+            }
+            long size = Files.size(path);
+            // Read whole, the text takes about three times the file's size in memory as it is parsed.
+            long most = Math.min(Integer.MAX_VALUE - 8, Runtime.getRuntime().maxMemory() / 4);
+            if (size > most) {
+                throw new RecordingException(path + ": the recording is " + size + " bytes, more than replay reads at"
+                        + " once with this Java's heap (" + most + " bytes; a larger heap, RP1_OPTS=-Xmx8g, reads"
+                        + " up to a quarter of it, at most 2 GB)");
+            }
             text = StandardCharsets.UTF_8.newDecoder().decode(ByteBuffer.wrap(Files.readAllBytes(path))).toString();
         } catch (CharacterCodingException e) {
             throw new RecordingException(path + ": not a recording (not UTF-8 text)");

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
+import java.io.RandomAccessFile;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -73,6 +74,19 @@ class RecordingReaderTest {
         assertEquals(new Request.Placement("p"), r.steps().get(1).request());
         assertEquals(10, r.steps().get(1).line());
         assertEquals(new Recording.End(11, 3, 1.5, 1, 0x1f), r.end());
+    }
+
+    @Test
+    void aFolderOrAFileTooLargeToReadIsRefusedWithAMessageNotRunOutOfMemoryOver(@TempDir Path dir) throws Exception {
+        RecordingException folder = assertThrows(RecordingException.class, () -> RecordingReader.read(dir));
+        assertEquals(dir + ": not a recording (not a file)", folder.getMessage());
+        Path huge = dir.resolve("huge.rec");
+        try (RandomAccessFile f = new RandomAccessFile(huge.toFile(), "rw")) {
+            f.setLength(3L << 30); // sparse: no disk is used
+        }
+        RecordingException large = assertThrows(RecordingException.class, () -> RecordingReader.read(huge));
+        assertTrue(large.getMessage().startsWith(huge + ": the recording is 3221225472 bytes, more than replay reads"
+                + " at once with this Java's heap ("), large.getMessage());
     }
 
     @Test
