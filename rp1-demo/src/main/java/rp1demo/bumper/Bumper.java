@@ -19,6 +19,8 @@ import rp1demo.clientzero.ClientZero;
  * golden-ratio step from one bump to the next, so the car does not bounce between two walls for
  * ever. A motion that cannot even start (halted at once, with duration 0) counts as a bump; if it
  * cannot turn either, it waits a moment and turns the other way, so simulated time always moves on.
+ * A placement refused (no free pose found) is asked for again after the same moment, and after
+ * {@link #MOST_REFUSALS} refusals the Bumper leaves: asking again at once would hold the clock at 0.
  * It decides from its events alone, so a run is a function of the server's seed. Its body is named
  * "Bumper"; its forward speed is the run's parameter {@code param.speed} (m/s) if the server's
  * properties give one, else {@link #SPEED}, so a sweep can compare speeds ({@code --vary param.speed=0.3,0.5}).
@@ -33,13 +35,16 @@ public class Bumper extends RsClient implements RsRunnable {
     static final double BACK_TIME = 0.5;
     /** Turning rate, radians per second. */
     static final double TURN_RATE = Math.PI / 2.0;
-    /** How long it waits when it can neither go on nor turn, seconds. */
+    /** How long it waits when it can neither go on nor turn, or was not placed, seconds. */
     static final double PAUSE = 0.25;
+    /** Refused placements after which it gives up and leaves. */
+    static final int MOST_REFUSALS = 40;
 
-    private enum Doing { AHEAD, BACKING, TURNING, WAITING }
+    private enum Doing { PLACING, AHEAD, BACKING, TURNING, WAITING }
 
     private RsBody body;
-    private Doing doing = Doing.WAITING;
+    private Doing doing = Doing.PLACING;
+    private int refusals;
     private int bumps;
     private double turnSign = 1.0;
     private double speed = SPEED;
@@ -62,13 +67,17 @@ public class Bumper extends RsClient implements RsRunnable {
         sendBodySpecification(body);
         addPlacementEventHandler(this::placed);
         addMotionHaltedEventHandler(this::halted);
-        addTimeoutEventHandler(e -> turnOtherWay());
+        addTimeoutEventHandler(e -> waited());
         sendPlacementRequest("$random");
     }
 
     private synchronized void placed(RsPlacementEvent e) {
         if (!e.valid) {
-            sendPlacementRequest("$random");
+            if (++refusals >= MOST_REFUSALS) {
+                shutdown();
+            } else {
+                sendTimeoutRequest(PAUSE);
+            }
             return;
         }
         sendPainterActivationRequest((RsBodyPainter) body.getPartByName(ClientZero.PEN));
@@ -98,11 +107,16 @@ public class Bumper extends RsClient implements RsRunnable {
                     ahead();
                 }
             }
-            case WAITING -> { }
+            case PLACING, WAITING -> { }
         }
     }
 
-    private synchronized void turnOtherWay() {
+    /** The pause is over: ask for a place again, or turn the other way. */
+    private synchronized void waited() {
+        if (doing == Doing.PLACING) {
+            sendPlacementRequest("$random");
+            return;
+        }
         turnSign = -turnSign;
         turn();
     }
