@@ -4,14 +4,18 @@ import java.io.Closeable;
 import java.io.File;
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.ByteBuffer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.HexFormat;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -33,6 +37,8 @@ import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsRunContext;
+import rp1.rossum.RsSegment;
+import rp1.rossum.RsWall;
 import rp1.simulator.config.ConfigException;
 import rp1.simulator.config.ResourceLocator;
 import rp1.simulator.config.ServerConfig;
@@ -141,8 +147,9 @@ public final class Batch {
             Map<String, String> planTexts = new LinkedHashMap<>();
             for (String name : names) {
                 ResourceLocator.Found text = locator.plan(name);
-                planTexts.put(name, text.text);
-                plans.put(name, plan(text));
+                RsPlan plan = plan(text);
+                planTexts.put(name, text.text + imagedWalls(name, text.text, plan));
+                plans.put(name, plan);
             }
             Path out = options.out.toAbsolutePath();
             if (out.toString().matches(".*\\s.*")) {
@@ -283,6 +290,34 @@ public final class Batch {
             throw new SweepException(location + ": neither maxSimulationTime nor exitWhenClientsDone is set, so a run"
                     + " might never end: set maxSimulationTime=SECONDS (or exitWhenClientsDone=true)");
         }
+    }
+
+    /**
+     * For a plan whose walls come from a map image (a map's {@code .yaml}, or a {@code bitmap} in plan
+     * text), what {@code --resume} must also find unchanged: the walls the image gave, which its text
+     * does not hold (an image edited between the two halves of a sweep made one sweep of two worlds).
+     * Empty for other plans, whose text is all of them.
+     */
+    static String imagedWalls(String name, String text, RsPlan plan) {
+        String lower = name.toLowerCase(Locale.ROOT);
+        if (!lower.endsWith(".yaml") && !lower.endsWith(".yml") && !text.contains("bitmap")) {
+            return "";
+        }
+        MessageDigest digest;
+        try {
+            digest = MessageDigest.getInstance("SHA-256");
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java has SHA-256", e);
+        }
+        ByteBuffer edge = ByteBuffer.allocate(4 * Double.BYTES);
+        for (RsWall w : plan.getWallArray()) {
+            for (RsSegment e : w.getSegmentArray()) {
+                edge.clear();
+                edge.putDouble(e.x).putDouble(e.y).putDouble(e.v.x).putDouble(e.v.y);
+                digest.update(edge.array());
+            }
+        }
+        return "\0walls " + HexFormat.of().formatHex(digest.digest());
     }
 
     private static RsPlan plan(ResourceLocator.Found text) throws SweepException {

@@ -44,7 +44,7 @@ final class SweepSpec {
         names.put(FORMAT, FORMAT_NAME);
         names.put("properties.sha256", "the properties' text (-p)");
         names.put("plans", "the floor plans (--plans)");
-        names.put("plans.sha256", "the floor plans' text");
+        names.put("plans.sha256", "the floor plans' text, and the walls their map images give");
         names.put("seeds", "the seeds (--seeds)");
         names.put("vary", "the varied keys (--vary)");
         names.put("client", "the client program (--client)");

@@ -19,6 +19,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 import rp1.Sweep;
+import rp1.planparser.RsPlanParser;
 
 /** Sweeps refused before they start, and a run that fails among runs that do not. */
 @Timeout(60)
@@ -188,6 +189,22 @@ class SweepTest {
             assertTrue(sweeps.out().contains("each run went in a process of its own: " + ExitingDlc.class.getName()
                     + ".quit calls System.exit, which would end every run in the sweep's process at once"), sweeps.out());
         }
+    }
+
+    @Test
+    void theWallsOfAMapsImageAreInTheSweepsFingerprintSoAResumeCannotMixTwoWorlds() throws Exception {
+        Path yaml = write("m.yaml", "image: m.pgm", "resolution: 0.5", "origin: [0.0, 0.0, 0.0]",
+                "occupied_thresh: 0.65", "free_thresh: 0.196", "negate: 0");
+        String text = Files.readString(yaml);
+        write("m.pgm", "P2", "3 2", "255", "0 255 255", "255 255 255");
+        String before = Batch.imagedWalls("m.yaml", text, RsPlanParser.parse(text, yaml.toString()));
+        write("m.pgm", "P2", "3 2", "255", "255 255 0", "255 255 255");
+        String after = Batch.imagedWalls("m.yaml", text, RsPlanParser.parse(text, yaml.toString()));
+        assertTrue(before.startsWith("\0walls "), before);
+        assertTrue(!before.equals(after), "the same text, another image");
+        String plain = "wall w { geometry: 0, 0, 4, 0, 0.05; }";
+        assertEquals("", Batch.imagedWalls("p.txt", plain, RsPlanParser.parse(plain, "p.txt")),
+                "a plan without an image is its text alone, as in sweeps begun before");
     }
 
     @Test
