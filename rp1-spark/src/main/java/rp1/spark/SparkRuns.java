@@ -71,7 +71,14 @@ final class SparkRuns implements RunEngine {
         Map<String, String> planTexts = new LinkedHashMap<>();
         try {
             for (String plan : batch.plans().keySet()) {
-                planTexts.put(plan, locator.plan(plan).text);
+                String text = locator.plan(plan).text;
+                if (Batch.readsAnImage(plan, text)) {
+                    // Only the plan's text goes in a task: the image it names would be missing there.
+                    throw new SweepException("--plans " + plan + ": a plan whose walls come from a map image cannot"
+                            + " go to a cluster yet (the image is not sent with the runs); run this sweep without"
+                            + " --master");
+                }
+                planTexts.put(plan, text);
             }
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());

@@ -118,6 +118,19 @@ class SparkSweepTest {
         assertTrue(own.get(1).contains("this robot always fails"), own.get(1));
     }
 
+    @Test
+    void aPlanWhoseWallsComeFromAMapImageIsRefusedBeforeAnyRunRatherThanFailingEveryRun() throws Exception {
+        Path rooms = Path.of(System.getProperty("rp1.root", "..")).resolve("FloorPlans/rooms.yaml").toAbsolutePath();
+        ByteArrayOutputStream text = new ByteArrayOutputStream();
+        PrintStream print = new PrintStream(text, true, StandardCharsets.UTF_8);
+        List<String> a = new ArrayList<>(List.of(args("local[1]", "1", dir.resolve("map"))));
+        a.addAll(List.of("--plans", rooms.toString()));
+        int status = SparkSweep.run(a.toArray(new String[0]), print, print, false, new Interruption());
+        assertEquals(1, status, text.toString(StandardCharsets.UTF_8));
+        assertTrue(text.toString(StandardCharsets.UTF_8).contains("--plans " + rooms + ": a plan whose walls come from a"
+                + " map image cannot go to a cluster yet"), text.toString(StandardCharsets.UTF_8));
+    }
+
     private Path sweep(String master, String seeds, String name) {
         return sweep(properties, master, seeds, name, 0);
     }

@@ -299,8 +299,7 @@ public final class Batch {
      * Empty for other plans, whose text is all of them.
      */
     static String imagedWalls(String name, String text, RsPlan plan) {
-        String lower = name.toLowerCase(Locale.ROOT);
-        if (!lower.endsWith(".yaml") && !lower.endsWith(".yml") && !text.contains("bitmap")) {
+        if (!readsAnImage(name, text)) {
             return "";
         }
         MessageDigest digest;
@@ -318,6 +317,16 @@ public final class Batch {
             }
         }
         return "\0walls " + HexFormat.of().formatHex(digest.digest());
+    }
+
+    /**
+     * Whether the plan named {@code name} with this text takes walls from an image file: a map's
+     * {@code .yaml}, or plan text with a {@code bitmap} (the word may also stand in a comment or a
+     * name, which only makes the answer yes where no image is read).
+     */
+    public static boolean readsAnImage(String name, String text) {
+        String lower = name.toLowerCase(Locale.ROOT);
+        return lower.endsWith(".yaml") || lower.endsWith(".yml") || text.contains("bitmap");
     }
 
     private static RsPlan plan(ResourceLocator.Found text) throws SweepException {
