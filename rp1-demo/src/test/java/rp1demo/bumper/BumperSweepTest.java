@@ -40,6 +40,9 @@ class BumperSweepTest {
         int status = Sweep.run(new String[] {"-p", dir.resolve("bumper.ini").toString(), "--seeds", seeds,
             "--jobs", jobs, "--pictures", "--out", dir.resolve(out).toString()}, print, print, false);
         assertEquals(0, status, text.toString(StandardCharsets.UTF_8));
+        // Its main method (run on its own over the network) ends the process, which a sweep's run never calls.
+        assertTrue(!text.toString(StandardCharsets.UTF_8).contains("each run went in a process of its own"),
+                text.toString(StandardCharsets.UTF_8));
         return Files.readAllLines(dir.resolve(out).resolve("results.csv"));
     }
 

@@ -8,6 +8,7 @@ import java.net.URISyntaxException;
 import java.net.URL;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -211,7 +212,7 @@ final class StaticState {
         in.readUnsignedShort();
         int count = in.readUnsignedShort();
         String[] utf8 = new String[count];
-        // For a class entry its name's index; for a method or name-and-type entry, its two indexes.
+        // For a class entry its name's index; for a field, method or name-and-type entry, its two indexes.
         int[] first = new int[count];
         int[] second = new int[count];
         int[] tags = new int[count];
@@ -221,13 +222,13 @@ final class StaticState {
             switch (tag) {
                 case 1 -> utf8[i] = in.readUTF();
                 case 7 -> first[i] = in.readUnsignedShort();
-                case 10, 11, 12 -> {
+                case 9, 10, 11, 12 -> {
                     first[i] = in.readUnsignedShort();
                     second[i] = in.readUnsignedShort();
                 }
                 case 8, 16, 19, 20 -> in.readUnsignedShort();
                 case 15 -> in.skipNBytes(3);
-                case 3, 4, 9, 17, 18 -> in.skipNBytes(4);
+                case 3, 4, 17, 18 -> in.skipNBytes(4);
                 case 5, 6 -> {
                     in.skipNBytes(8);
                     i++;
@@ -237,16 +238,16 @@ final class StaticState {
         }
         in.readUnsignedShort();
         String self = utf8[first[in.readUnsignedShort()]];
-        in.readUnsignedShort();
-        in.skipNBytes(2L * in.readUnsignedShort());
+        // What a run can reach from here: the class's supertypes, whose code it inherits, and what
+        // the code of its methods other than main refers to.
         Set<String> classes = new LinkedHashSet<>();
-        for (int i = 1; i < count; i++) {
-            if (tags[i] == 7) {
-                String name = utf8[first[i]].replaceFirst("^\\[+L?", "").replaceFirst(";$", "");
-                if (name.contains("/") || name.length() > 1) {
-                    classes.add(name.replace('/', '.'));
-                }
-            }
+        int superclass = in.readUnsignedShort();
+        if (superclass != 0) {
+            classes.add(binaryName(utf8[first[superclass]]));
+        }
+        int interfaces = in.readUnsignedShort();
+        for (int i = 0; i < interfaces; i++) {
+            classes.add(binaryName(utf8[first[in.readUnsignedShort()]]));
         }
         // The entries that name a method ending the process.
         Map<Integer, String> exits = new HashMap<>();
@@ -260,11 +261,9 @@ final class StaticState {
                 }
             }
         }
-        if (exits.isEmpty()) {
-            return new Calls(Optional.empty(), classes);
-        }
         skipMembers(in);
         int methods = in.readUnsignedShort();
+        Optional<String> exit = Optional.empty();
         for (int m = 0; m < methods; m++) {
             in.readUnsignedShort();
             String name = utf8[in.readUnsignedShort()];
@@ -275,15 +274,48 @@ final class StaticState {
             for (int a = 0; a < attributes; a++) {
                 String attribute = utf8[in.readUnsignedShort()];
                 byte[] body = in.readNBytes(in.readInt());
-                if (!main && attribute.equals("Code")) {
-                    String call = invoked(body, exits);
-                    if (call != null) {
-                        return new Calls(Optional.of(self.replace('/', '.') + "." + name + " calls " + call), classes);
+                if (main || !attribute.equals("Code")) {
+                    continue;
+                }
+                for (int index : referenced(body)) {
+                    if (index < count && tags[index] == 7) {
+                        classes.add(binaryName(utf8[first[index]]));
+                    } else if (index < count && (tags[index] == 9 || tags[index] == 10 || tags[index] == 11)) {
+                        classes.add(binaryName(utf8[first[first[index]]]));
+                    }
+                    if (exit.isEmpty() && exits.containsKey(index)) {
+                        exit = Optional.of(self.replace('/', '.') + "." + name + " calls " + exits.get(index));
                     }
                 }
             }
         }
-        return new Calls(Optional.empty(), classes);
+        return new Calls(exit, classes);
+    }
+
+    /** A class entry's name ({@code a/b/C}, or an array's descriptor) as a binary name. */
+    private static String binaryName(String entry) {
+        return entry.replaceFirst("^\\[+L?", "").replaceFirst(";$", "").replace('/', '.');
+    }
+
+    /**
+     * The constant pool indexes that the code of a Code attribute refers to with the instructions that
+     * name a class, a field or a method (ldc_w, get/put field and static, the invokes, new, anewarray,
+     * checkcast, instanceof, multianewarray). The bytes are searched for those instructions rather than
+     * decoded one after another: an operand that happens to read as one counts too, which at worst
+     * makes a sweep look at a class more, or send its runs to processes of their own.
+     */
+    private static List<Integer> referenced(byte[] codeAttribute) {
+        int length = ((codeAttribute[4] & 0xFF) << 24) | ((codeAttribute[5] & 0xFF) << 16)
+                | ((codeAttribute[6] & 0xFF) << 8) | (codeAttribute[7] & 0xFF);
+        List<Integer> found = new ArrayList<>();
+        for (int i = 8; i + 2 < 8 + length && i + 2 < codeAttribute.length; i++) {
+            int op = codeAttribute[i] & 0xFF;
+            if (op == 0x13 || (op >= 0xB2 && op <= 0xB9) || op == 0xBB || op == 0xBD || op == 0xC0 || op == 0xC1
+                    || op == 0xC5) {
+                found.add(((codeAttribute[i + 1] & 0xFF) << 8) | (codeAttribute[i + 2] & 0xFF));
+            }
+        }
+        return found;
     }
 
     /** Skips a class file's fields (or any list of members laid out as they are). */
@@ -299,26 +331,6 @@ final class StaticState {
         }
     }
 
-    /**
-     * Which of {@code methods} (by constant pool index) the code of a Code attribute invokes, or null.
-     * The bytes are searched for an invoke instruction and its index rather than decoded one
-     * instruction after another: an operand that happens to read so counts too, which at worst sends a
-     * sweep's runs to processes of their own.
-     */
-    private static String invoked(byte[] codeAttribute, Map<Integer, String> methods) {
-        int length = ((codeAttribute[4] & 0xFF) << 24) | ((codeAttribute[5] & 0xFF) << 16)
-                | ((codeAttribute[6] & 0xFF) << 8) | (codeAttribute[7] & 0xFF);
-        for (int i = 8; i + 2 < 8 + length && i + 2 < codeAttribute.length; i++) {
-            int op = codeAttribute[i] & 0xFF;
-            if (op == 0xB6 || op == 0xB8 || op == 0xB7) {
-                String call = methods.get(((codeAttribute[i + 1] & 0xFF) << 8) | (codeAttribute[i + 2] & 0xFF));
-                if (call != null) {
-                    return call;
-                }
-            }
-        }
-        return null;
-    }
 
     /** A primitive or a string. */
     private static boolean isValue(String type) {

@@ -1,6 +1,7 @@
 package rp1.simulator.batch;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -161,7 +162,17 @@ class StaticStateTest {
         }
 
         public static void main(String[] args) {
+            if (args.length > 1) {
+                Launcher.go();
+            }
             System.exit(args.length == 0 ? 1 : 0);
+        }
+    }
+
+    /** What a robot's main may use to run on its own. */
+    static final class Launcher {
+        static void go() {
+            System.exit(2);
         }
     }
 
@@ -170,6 +181,10 @@ class StaticStateTest {
         assertEquals(Optional.of(Quitter.class.getName() + ".bumped calls Runtime.halt"),
                 StaticState.exitCallIn(classFile(Quitter.class)));
         assertEquals(Optional.empty(), StaticState.exitCallIn(classFile(Standalone.class)));
+        assertTrue(!StaticState.calls(classFile(Standalone.class)).classes().contains(Launcher.class.getName()),
+                "a class that only main uses is not reached by a run");
+        assertEquals(Optional.of(Launcher.class.getName() + ".go calls System.exit"),
+                StaticState.exitCallIn(classFile(Launcher.class)));
         assertEquals(Optional.empty(), StaticState.exitCallIn(classFile(Counter.class)));
     }
 
