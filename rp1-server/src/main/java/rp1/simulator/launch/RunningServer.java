@@ -352,7 +352,7 @@ public final class RunningServer {
         try {
             List<String> stuck = new ArrayList<>(StuckThreads.end(List.of(scheduler), GRACE_MILLIS));
             // A robot's handler that called System.exit holds the task until this stop is over.
-            boolean exiting = ExitCaller.isExiting(scheduler.getStackTrace());
+            boolean exiting = scheduler.isAlive() && ExitCaller.isExiting(scheduler.getStackTrace());
             if (!tasks.awaitIdle(stuck.isEmpty() && !exiting ? GRACE_MILLIS : 0)) {
                 Thread holder = tasks.runningTasks();
                 if (holder != null && holder != Thread.currentThread() && holder != scheduler) {
