@@ -109,18 +109,36 @@ final class SweepSpec {
             String there = values.get(key.getKey());
             String now = here.values.get(key.getKey());
             if (!now.equals(there)) {
+                int from = firstDifference(there, now) > 30 ? firstDifference(there, now) - 20 : 0;
                 d.add(key.getKey().endsWith(".sha256") || key.getKey().endsWith(".crc32") ? key.getValue() + " is not the same"
-                        : key.getValue() + ": " + shown(there) + " there, " + shown(now) + " here");
+                        : key.getValue() + ": " + shown(there, from) + " there, " + shown(now, from) + " here");
             }
         }
         return d;
     }
 
-    private static String shown(String value) {
+    /** Where two values first differ (0 if either is missing). */
+    private static int firstDifference(String a, String b) {
+        if (a == null || b == null) {
+            return 0;
+        }
+        int i = 0;
+        while (i < a.length() && i < b.length() && a.charAt(i) == b.charAt(i)) {
+            i++;
+        }
+        return i;
+    }
+
+    /**
+     * A value as the message shows it: from {@code from} on (a little before where two long values part,
+     * so that the difference is in sight), and at most 60 characters.
+     */
+    private static String shown(String value, int from) {
         if (value == null) {
             return "none";
         }
-        return value.length() > 60 ? value.substring(0, 57) + "..." : value;
+        String shown = from > 0 && from < value.length() ? "..." + value.substring(from) : value;
+        return shown.length() > 60 ? shown.substring(0, 57) + "..." : shown;
     }
 
     private static String sha256(String text) {
