@@ -45,14 +45,15 @@ final class DirectLink {
     /**
      * Runs the client's handlers for {@code event}. A handler's RuntimeException is reported by the
      * client and the event goes on to the next handler, as over the wire; an Error ends the session,
-     * a StackOverflowError too (a handler that recursed too deep: the stack has unwound to here, as it
-     * would have on the client's own thread over a pipe). Running out of memory, or another failure of
-     * the JVM itself, is not the client's alone and goes on up.
+     * a StackOverflowError or an OutOfMemoryError too (a handler that recursed too deep or allocated
+     * too much: the stack has unwound to here and what it held can be collected, as on the client's
+     * own thread over a pipe, where either ends the client alone). Another failure of the JVM itself
+     * (an InternalError) is not the client's and goes on up.
      */
     void deliver(RsEvent event) {
         try {
             client.receiveDirect(EventCodec.copy(event));
-        } catch (StackOverflowError e) {
+        } catch (StackOverflowError | OutOfMemoryError e) {
             onFailure.accept(e);
             close();
         } catch (VirtualMachineError e) {

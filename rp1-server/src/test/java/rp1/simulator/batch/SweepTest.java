@@ -208,6 +208,17 @@ class SweepTest {
     }
 
     @Test
+    void aHandlerThatRunsOutOfMemoryFailsItsRobotNotTheSimulation() throws Exception {
+        // Called directly, as the robot's own thread over a pipe: status 2 naming the client, not 70.
+        Path p = properties("maxSimulationTime=5", "dlcName=" + GreedyDlc.class.getName());
+        int status = sweep("-p", p.toString(), "--seeds", "1", "--out", dir.resolve("out").toString());
+        assertEquals(Sweep.RUN_FAILED, status, sweeps.out() + sweeps.err());
+        String row = Files.readAllLines(dir.resolve("out/results.csv")).get(1);
+        assertTrue(row.contains(",2,client failed: client " + GreedyDlc.class.getName() + ": a handler failed:"
+                + " java.lang.OutOfMemoryError: Java heap space"), row);
+    }
+
+    @Test
     void aRunsFolderIsNamedAfterItsPlanWithoutTheEndingOfAPlanOrAMap() {
         assertEquals("contest", Batch.stem("FloorPlans/contest.txt"));
         assertEquals("rooms", Batch.stem("maps/rooms.yaml"), "a map's plan too");
