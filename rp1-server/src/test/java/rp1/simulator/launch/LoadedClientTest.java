@@ -117,7 +117,7 @@ class LoadedClientTest {
     void aHandlerThatRecursesWithoutEndFailsItsClientAloneEvenCalledDirectly() throws Exception {
         // Called directly, on the thread that runs the simulation: the StackOverflowError ended that
         // thread and, with it, the whole server (exit status 70), where over a pipe the client failed alone.
-        RecursingDlc.outOfMemory = false;
+        RecursingDlc.internalError = false;
         RunningServer server = TestServer.start(dir, "dlcEnabled=true", "dlcSetIO=true", "dlcName="
                 + RecursingDlc.class.getName() + "," + TirelessDlc.class.getName(), LOCKSTEP, "interlockEnabled=true",
                 "maxSimulationTime=2");
@@ -129,16 +129,16 @@ class LoadedClientTest {
 
     @Test
     void anErrorThatEndsTheSimulationThreadStopsTheRunWithStatus70() throws Exception {
-        RecursingDlc.outOfMemory = true;
+        RecursingDlc.internalError = true;
         try {
             RunningServer server = TestServer.start(dir, "dlcEnabled=true", "dlcSetIO=true", "dlcName="
                     + RecursingDlc.class.getName(), LOCKSTEP, "interlockEnabled=true", "maxSimulationTime=2");
             assertEquals(OptionalInt.of(ExitStatus.FATAL_ERROR), server.awaitExit(20, TimeUnit.SECONDS), TestServer.log(dir));
-            assertEquals("the simulation failed: java.lang.OutOfMemoryError: made up by the test", server.getStopReason());
-            assertTrue(TestServer.log(dir).contains("The simulation failed and stops: java.lang.OutOfMemoryError"),
+            assertEquals("the simulation failed: java.lang.InternalError: made up by the test", server.getStopReason());
+            assertTrue(TestServer.log(dir).contains("The simulation failed and stops: java.lang.InternalError"),
                     TestServer.log(dir));
         } finally {
-            RecursingDlc.outOfMemory = false;
+            RecursingDlc.internalError = false;
         }
     }
 

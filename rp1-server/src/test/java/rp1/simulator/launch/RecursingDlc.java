@@ -2,11 +2,11 @@ package rp1.simulator.launch;
 
 /**
  * A loaded client, called directly, whose heartbeat handler at the third beat recurses without end
- * (a robot's bug) or, if asked, throws an OutOfMemoryError.
+ * (a robot's bug) or, if asked, throws an InternalError (a failure of the JVM itself, not the robot's).
  */
 public class RecursingDlc extends ThirdBeatDlc {
-    /** Whether the third beat runs out of memory instead of stack. */
-    static volatile boolean outOfMemory;
+    /** Whether the third beat fails the JVM instead of running out of stack. */
+    static volatile boolean internalError;
 
     public RecursingDlc() {
         super("recursing", "p2");
@@ -14,8 +14,8 @@ public class RecursingDlc extends ThirdBeatDlc {
 
     @Override
     void thirdBeat() {
-        if (outOfMemory) {
-            throw new OutOfMemoryError("made up by the test");
+        if (internalError) {
+            throw new InternalError("made up by the test");
         }
         deeper(0);
     }
