@@ -84,7 +84,7 @@ final class LoaderRuns implements RunEngine {
         }
         instead = afterStuck.get();
         insteadNote = "the runs after " + run.dir().getFileName() + " went in processes of their own: it left "
-                + threads.get(0).replaceFirst(": still running .*", "") + " running, which could not be stopped";
+                + threads.get(0) + " running, which could not be stopped";
         if (stopping) {
             instead.stopAll();
         }

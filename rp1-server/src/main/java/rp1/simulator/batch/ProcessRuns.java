@@ -15,7 +15,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.stream.Collectors;
 
-import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.JavaCommand;
 
 /**
@@ -156,17 +155,7 @@ final class ProcessRuns implements RunEngine {
         }
     }
 
-    /**
-     * The run's report, as its process wrote it; a failure if the process, not stopped by the sweep,
-     * ended with another status than a report of a run that went as asked (the robot called
-     * System.exit before the run could say so).
-     */
-    private RunReport report(Path dir, int status) {
-        RunReport report = RunReport.ofProcess(dir, dir.resolve(OUTPUT), status);
-        if (!stopping && report.succeeded() && status != ExitStatus.OK) {
-            return RunReport.failed("client failed: the run's process ended with status " + status
-                    + " where the run ended as asked (System.exit in the robot?)", ExitStatus.CLIENT_FAILED);
-        }
-        return report;
+    private static RunReport report(Path dir, int status) {
+        return RunReport.ofProcess(dir, dir.resolve(OUTPUT), status);
     }
 }

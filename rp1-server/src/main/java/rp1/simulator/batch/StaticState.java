@@ -124,30 +124,10 @@ final class StaticState {
     /** The first field of this class file that can keep state, as "CLASS.FIELD", or empty. */
     static Optional<String> of(byte[] classFile) throws IOException {
         DataInputStream in = new DataInputStream(new ByteArrayInputStream(classFile));
-        if (in.readInt() != 0xCAFEBABE) {
-            throw new IOException("not a class file");
-        }
-        in.readUnsignedShort();
-        in.readUnsignedShort();
-        String[] utf8 = new String[in.readUnsignedShort()];
-        int[] classNameIndex = new int[utf8.length];
-        for (int i = 1; i < utf8.length; i++) {
-            int tag = in.readUnsignedByte();
-            switch (tag) {
-                case 1 -> utf8[i] = in.readUTF();
-                case 7 -> classNameIndex[i] = in.readUnsignedShort();
-                case 8, 16, 19, 20 -> in.readUnsignedShort();
-                case 15 -> in.skipNBytes(3);
-                case 3, 4, 9, 10, 11, 12, 17, 18 -> in.skipNBytes(4);
-                case 5, 6 -> {
-                    in.skipNBytes(8);
-                    i++;
-                }
-                default -> throw new IOException("constant pool tag " + tag);
-            }
-        }
+        ConstantPool pool = ConstantPool.read(in);
+        String[] utf8 = pool.utf8();
         int access = in.readUnsignedShort();
-        String self = utf8[classNameIndex[in.readUnsignedShort()]];
+        String self = pool.className(in.readUnsignedShort());
         in.readUnsignedShort();
         in.skipNBytes(2L * in.readUnsignedShort());
         for (String u : utf8) {
@@ -205,55 +185,30 @@ final class StaticState {
     /** {@link Calls} of a class file. */
     static Calls calls(byte[] classFile) throws IOException {
         DataInputStream in = new DataInputStream(new ByteArrayInputStream(classFile));
-        if (in.readInt() != 0xCAFEBABE) {
-            throw new IOException("not a class file");
-        }
+        ConstantPool pool = ConstantPool.read(in);
+        String[] utf8 = pool.utf8();
+        int[] tags = pool.tags();
+        int[] first = pool.first();
+        int[] second = pool.second();
+        int count = utf8.length;
         in.readUnsignedShort();
-        in.readUnsignedShort();
-        int count = in.readUnsignedShort();
-        String[] utf8 = new String[count];
-        // For a class entry its name's index; for a field, method or name-and-type entry, its two indexes.
-        int[] first = new int[count];
-        int[] second = new int[count];
-        int[] tags = new int[count];
-        for (int i = 1; i < count; i++) {
-            int tag = in.readUnsignedByte();
-            tags[i] = tag;
-            switch (tag) {
-                case 1 -> utf8[i] = in.readUTF();
-                case 7 -> first[i] = in.readUnsignedShort();
-                case 9, 10, 11, 12 -> {
-                    first[i] = in.readUnsignedShort();
-                    second[i] = in.readUnsignedShort();
-                }
-                case 8, 16, 19, 20 -> in.readUnsignedShort();
-                case 15 -> in.skipNBytes(3);
-                case 3, 4, 17, 18 -> in.skipNBytes(4);
-                case 5, 6 -> {
-                    in.skipNBytes(8);
-                    i++;
-                }
-                default -> throw new IOException("constant pool tag " + tag);
-            }
-        }
-        in.readUnsignedShort();
-        String self = utf8[first[in.readUnsignedShort()]];
+        String self = pool.className(in.readUnsignedShort());
         // What a run can reach from here: the class's supertypes, whose code it inherits, and what
         // the code of its methods other than main refers to.
         Set<String> classes = new LinkedHashSet<>();
         int superclass = in.readUnsignedShort();
         if (superclass != 0) {
-            classes.add(binaryName(utf8[first[superclass]]));
+            classes.add(binaryName(pool.className(superclass)));
         }
         int interfaces = in.readUnsignedShort();
         for (int i = 0; i < interfaces; i++) {
-            classes.add(binaryName(utf8[first[in.readUnsignedShort()]]));
+            classes.add(binaryName(pool.className(in.readUnsignedShort())));
         }
         // The entries that name a method ending the process.
         Map<Integer, String> exits = new HashMap<>();
         for (int i = 1; i < count; i++) {
             if (tags[i] == 10 || tags[i] == 11) {
-                String owner = utf8[first[first[i]]];
+                String owner = pool.className(first[i]);
                 String name = utf8[first[second[i]]];
                 if (("java/lang/System".equals(owner) && "exit".equals(name))
                         || ("java/lang/Runtime".equals(owner) && ("exit".equals(name) || "halt".equals(name)))) {
@@ -279,9 +234,9 @@ final class StaticState {
                 }
                 for (int index : referenced(body)) {
                     if (index < count && tags[index] == 7) {
-                        classes.add(binaryName(utf8[first[index]]));
+                        classes.add(binaryName(pool.className(index)));
                     } else if (index < count && (tags[index] == 9 || tags[index] == 10 || tags[index] == 11)) {
-                        classes.add(binaryName(utf8[first[first[index]]]));
+                        classes.add(binaryName(pool.className(first[index])));
                     }
                     if (exit.isEmpty() && exits.containsKey(index)) {
                         exit = Optional.of(self.replace('/', '.') + "." + name + " calls " + exits.get(index));
@@ -316,6 +271,49 @@ final class StaticState {
             }
         }
         return found;
+    }
+
+    /**
+     * A class file's constant pool, read past its magic number and version: each entry's tag, the text
+     * of its UTF-8 entries, and for a class entry its name's index, for a field, method or
+     * name-and-type entry its two indexes.
+     */
+    private record ConstantPool(int[] tags, String[] utf8, int[] first, int[] second) {
+        static ConstantPool read(DataInputStream in) throws IOException {
+            if (in.readInt() != 0xCAFEBABE) {
+                throw new IOException("not a class file");
+            }
+            in.readUnsignedShort();
+            in.readUnsignedShort();
+            int count = in.readUnsignedShort();
+            ConstantPool pool = new ConstantPool(new int[count], new String[count], new int[count], new int[count]);
+            for (int i = 1; i < count; i++) {
+                int tag = in.readUnsignedByte();
+                pool.tags[i] = tag;
+                switch (tag) {
+                    case 1 -> pool.utf8[i] = in.readUTF();
+                    case 7 -> pool.first[i] = in.readUnsignedShort();
+                    case 9, 10, 11, 12 -> {
+                        pool.first[i] = in.readUnsignedShort();
+                        pool.second[i] = in.readUnsignedShort();
+                    }
+                    case 8, 16, 19, 20 -> in.readUnsignedShort();
+                    case 15 -> in.skipNBytes(3);
+                    case 3, 4, 17, 18 -> in.skipNBytes(4);
+                    case 5, 6 -> {
+                        in.skipNBytes(8);
+                        i++;
+                    }
+                    default -> throw new IOException("constant pool tag " + tag);
+                }
+            }
+            return pool;
+        }
+
+        /** The name ({@code a/b/C}) of the class entry at {@code index}. */
+        String className(int index) {
+            return utf8[first[index]];
+        }
     }
 
     /** Skips a class file's fields (or any list of members laid out as they are). */

@@ -33,9 +33,7 @@ public final class ExitCaller {
         for (int i = 0; i + 1 < stack.length; i++) {
             if (isExit(stack[i]) && !isExit(stack[i + 1])) {
                 StackTraceElement caller = stack[i + 1];
-                return isTheSimulators(caller.getClassName()) ? Optional.empty()
-                        : Optional.of(caller.getClassName() + "." + caller.getMethodName() + "(" + caller.getFileName()
-                                + ":" + caller.getLineNumber() + ")");
+                return isTheSimulators(caller.getClassName()) ? Optional.empty() : Optional.of(shown(caller));
             }
         }
         return Optional.empty();
@@ -54,6 +52,12 @@ public final class ExitCaller {
         } catch (ClassNotFoundException | LinkageError | SecurityException e) {
             return false;
         }
+    }
+
+    /** "CLASS.METHOD(FILE:LINE)": a frame as a log line names it, without its module or class loader. */
+    static String shown(StackTraceElement frame) {
+        return frame.getClassName() + "." + frame.getMethodName() + "(" + frame.getFileName() + ":"
+                + frame.getLineNumber() + ")";
     }
 
     /** Whether a thread with this stack is in {@code System.exit} (waiting for the shutdown hooks). */

@@ -350,7 +350,7 @@ public final class RunningServer {
         }
         Scheduler tasks = parts.simulation.getScheduler();
         try {
-            List<String> stuck = new ArrayList<>(StuckThreads.end(List.of(scheduler), GRACE_MILLIS));
+            List<StuckThreads.Ended> stuck = new ArrayList<>(StuckThreads.end(List.of(scheduler), GRACE_MILLIS));
             // A robot's handler that called System.exit holds the task until this stop is over.
             boolean exiting = scheduler.isAlive() && ExitCaller.isExiting(scheduler.getStackTrace());
             if (!tasks.awaitIdle(stuck.isEmpty() && !exiting ? GRACE_MILLIS : 0)) {
@@ -360,9 +360,9 @@ public final class RunningServer {
                     tasks.awaitIdle(StuckThreads.AFTER_EACH_STEP_MILLIS);
                 }
             }
-            for (String line : stuck) {
-                parts.log.important("The simulation's task did not end when the run stopped: " + line);
-                noteIfLeftRunning(line);
+            for (StuckThreads.Ended t : stuck) {
+                parts.log.important("The simulation's task did not end when the run stopped: " + t);
+                noteIfLeftRunning(t);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -375,24 +375,25 @@ public final class RunningServer {
      */
     private void endClientThreads() {
         try {
-            for (String line : StuckThreads.end(parts.launcher.threads(), GRACE_MILLIS)) {
-                parts.log.important("A loaded client's thread did not end with the run: " + line);
-                noteIfLeftRunning(line);
+            for (StuckThreads.Ended t : StuckThreads.end(parts.launcher.threads(), GRACE_MILLIS)) {
+                parts.log.important("A loaded client's thread did not end with the run: " + t);
+                noteIfLeftRunning(t);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
     }
 
-    private void noteIfLeftRunning(String line) {
-        if (StuckThreads.stillRunning(line)) {
-            leftRunning.add(line);
+    private void noteIfLeftRunning(StuckThreads.Ended t) {
+        if (t.stillRunning()) {
+            leftRunning.add(t.thread());
         }
     }
 
     /**
-     * The threads of the run's robots that could not be ended when it stopped (each as its log line
-     * says it): they keep computing in this process. Empty for a run that has not stopped, or left none.
+     * The threads of the run's robots that could not be ended when it stopped, each as "thread "NAME"
+     * in CLASS.METHOD(FILE:LINE)": they keep computing in this process. Empty for a run that has not
+     * stopped, or left none.
      */
     public List<String> threadsLeftRunning() {
         return List.copyOf(leftRunning);

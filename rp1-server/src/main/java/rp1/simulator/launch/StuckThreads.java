@@ -16,8 +16,16 @@ import java.util.concurrent.TimeUnit;
  * caller is told, so that a sweep can carry its later runs out in processes of their own.
  */
 final class StuckThreads {
-    /** How a line of {@link #end} says a thread could not be ended. */
-    static final String STILL_RUNNING = "still running";
+    /**
+     * A thread that did not end by itself: "thread "NAME" in FRAME", and how it ended ("ended when
+     * interrupted", "stopped", or "still running" and why).
+     */
+    record Ended(String thread, String how, boolean stillRunning) {
+        @Override
+        public String toString() {
+            return thread + ": " + how;
+        }
+    }
 
     /** How long the threads are waited for before any is looked at. */
     private static final long FIRST_WAIT_MILLIS = 50;
@@ -32,11 +40,9 @@ final class StuckThreads {
      * Waits for the threads to end, at most {@code graceMillis} for all of them together, then ends those
      * still alive as the class comment says.
      *
-     * @return one line per thread that did not end by itself: its name, where it was, and how it ended
-     *         ("ended when interrupted", "stopped", or "still running" and why: it caught the stop, or
-     *         this Java does not stop threads)
+     * @return each thread that did not end by itself: its name, where it was, and how it ended
      */
-    static List<String> end(List<Thread> threads, long graceMillis) throws InterruptedException {
+    static List<Ended> end(List<Thread> threads, long graceMillis) throws InterruptedException {
         // Most threads end at once; only those that do not are looked at (a stack costs a pause of the thread).
         List<Thread> late = joinAll(threads, Math.min(graceMillis, FIRST_WAIT_MILLIS));
         // A thread in System.exit is waiting for the shutdown hooks, among them whoever called this:
@@ -62,19 +68,15 @@ final class StuckThreads {
             refused |= !stop(t);
         }
         List<Thread> unstoppable = joinAll(unmoved, AFTER_EACH_STEP_MILLIS);
-        List<String> lines = new ArrayList<>();
+        List<Ended> ended = new ArrayList<>();
         for (int i = 0; i < alive.size(); i++) {
             Thread t = alive.get(i);
-            String how = unstoppable.contains(t) ? STILL_RUNNING + (refused ? " (this Java does not stop threads)"
-                    : " (it caught the stop)") : unmoved.contains(t) ? "stopped" : "ended when interrupted";
-            lines.add(where.get(i) + ": " + how);
+            boolean running = unstoppable.contains(t);
+            String how = running ? "still running" + (refused ? " (this Java does not stop threads)" : " (it caught the stop)")
+                    : unmoved.contains(t) ? "stopped" : "ended when interrupted";
+            ended.add(new Ended(where.get(i), how, running));
         }
-        return lines;
-    }
-
-    /** Whether a line of {@link #end} is about a thread that could not be ended. */
-    static boolean stillRunning(String line) {
-        return line.contains(": " + STILL_RUNNING + " (");
+        return ended;
     }
 
     /** The threads still alive once each has been waited for, all within {@code millis}. */
@@ -106,8 +108,7 @@ final class StuckThreads {
                 break;
             }
         }
-        return "thread \"" + t.getName() + "\"" + (frame == null ? "" : " in " + frame.getClassName() + "."
-                + frame.getMethodName() + "(" + frame.getFileName() + ":" + frame.getLineNumber() + ")");
+        return "thread \"" + t.getName() + "\"" + (frame == null ? "" : " in " + ExitCaller.shown(frame));
     }
 
     // Thread.stop is deprecated because the stopped thread's locks are let go with its objects half

@@ -1,22 +1,17 @@
 package rp1.simulator.batch;
 
-import java.io.IOException;
-
-import rp1.rossum.RsClient;
-import rp1.rossum.event.RsTimeoutEvent;
-
 /** A robot that ends the Java process it runs in one simulated second after it is placed. */
-public class ExitingDlc extends RsClient {
-    @Override
-    public void initialize() throws IOException {
-        super.initialize();
-        sendBodySpecification(Disc.named("exiting", 0.1));
-        addTimeoutEventHandler(this::quit);
-        sendPlacementRequest("home");
-        sendTimeoutRequest(1.0);
+public class ExitingDlc extends OneSecondDlc {
+    public ExitingDlc() {
+        super("exiting");
     }
 
-    private void quit(RsTimeoutEvent e) {
+    @Override
+    void atOneSecond() {
+        quit();
+    }
+
+    private void quit() {
         System.exit(3);
     }
 }

@@ -1,18 +1,14 @@
 package rp1.simulator.batch;
 
-import java.io.IOException;
-
-import rp1.rossum.RsClient;
-
 /** A robot whose timeout handler, called by the simulation itself, computes for ever once it is placed. */
-public class SpinningHandlerDlc extends RsClient {
+public class SpinningHandlerDlc extends OneSecondDlc {
+    public SpinningHandlerDlc() {
+        super("spinning");
+    }
+
     @Override
-    public void initialize() throws IOException {
-        super.initialize();
-        sendBodySpecification(Disc.named("spinning", 0.1));
-        addTimeoutEventHandler(e -> spin());
-        sendPlacementRequest("home");
-        sendTimeoutRequest(1.0);
+    void atOneSecond() {
+        spin();
     }
 
     static long spin() {
