@@ -49,6 +49,12 @@ public class RsBody extends RsComponent {
     private transient RsBodyContactSensor[] contactSensors;
     /** Each contact sensor's outline where the last motion started, filled again at every start. */
     private transient RsSegment[][] contactOutlines;
+    /**
+     * The interactive shapes' outlines where the last motion started, one after another in part order,
+     * filled again at every start: the collision search takes them as one body, so that a wall is
+     * searched once for all the parts rather than once per part.
+     */
+    private transient RsSegment[] interactiveOutline;
     private int bodyID;
 
     /** An empty body; null is kept as the name and transmitted as "". */
@@ -126,6 +132,33 @@ public class RsBody extends RsComponent {
             interactive = kept;
         }
         return kept;
+    }
+
+    /** {@link #interactiveOutline}, filled for the current motion's start pose. */
+    private RsSegment[] interactiveOutline() {
+        RsBodyShape[] shapes = interactive();
+        int n = 0;
+        for (RsBodyShape s : shapes) {
+            RsSegment[] o = s.collisionOutline();
+            n += o == null ? 0 : o.length;
+        }
+        RsSegment[] into = interactiveOutline;
+        if (into == null || into.length != n) {
+            into = new RsSegment[n];
+            for (int i = 0; i < n; i++) {
+                into[i] = new RsSegment();
+            }
+            interactiveOutline = into;
+        }
+        RsTransform start = motion.transform0;
+        int at = 0;
+        for (RsBodyShape s : shapes) {
+            RsSegment[] o = s.collisionOutline();
+            for (int i = 0; o != null && i < o.length; i++) {
+                start.map2(o[i], into[at++]);
+            }
+        }
+        return into;
     }
 
     private RsBodyContactSensor[] contactSensors() {
@@ -362,13 +395,9 @@ public class RsBody extends RsComponent {
             return false;
         }
         flagContactSensors(walls);
-        boolean hit = false;
-        int[] order = RsBodyPart.nearestFirst(walls, motion);
-        for (RsBodyShape s : interactive()) {
-            if (s.searchForCollisions(walls, order, motion)) {
-                hit = true;
-            }
-        }
+        RsSegment[] outline = interactiveOutline();
+        boolean hit = outline.length > 0
+                && RsBodyPart.searchForCollisions(outline, walls, RsBodyPart.nearestFirst(walls, motion), motion);
         if (motion.collision) {
             motion.truncateForCollision();
             if (motion.timeTotal == 0.0) {
@@ -402,6 +431,11 @@ public class RsBody extends RsComponent {
             outlines[i] = body;
             for (RsWall wall : walls) {
                 RsSegment[] edges = wall.getSegmentArray();
+                // A wall that can only be met after the earliest contact so far cannot flag a sensor.
+                if (earliest < Double.POSITIVE_INFINITY
+                        && motion.cannotMeetBefore(body, body.length, edges, edges.length, earliest)) {
+                    continue;
+                }
                 double t = motion.contactTime(body, body.length, edges, edges.length);
                 if (t < earliest) {
                     earliest = t;

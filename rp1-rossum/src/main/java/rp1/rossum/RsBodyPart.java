@@ -172,7 +172,7 @@ public abstract class RsBodyPart extends RsComponent {
 
     /**
      * As {@link #searchForCollisions(RsWall[], RsMotion)}, trying the walls in {@code order} (from
-     * {@link #nearestFirst}: a body works it out once for all its parts).
+     * {@link #nearestFirst}).
      */
     boolean searchForCollisions(RsWall[] walls, int[] order, RsMotion motion) {
         RsSegment[] outline = collisionOutline();
@@ -181,10 +181,20 @@ public abstract class RsBodyPart extends RsComponent {
         }
         RsSegment[] body = BodyOutline.mapInto(outline, motion.transform0, startOutline);
         startOutline = body;
+        return searchForCollisions(body, walls, order, motion);
+    }
+
+    /**
+     * The collision search of {@code body} (edges at the motion's start, in world coordinates) against
+     * {@code walls} in {@code order}, recording the earliest contact in {@code motion}. Whether a
+     * contact was found. A body searches all its parts' outlines in one array: the contact time is
+     * the least over every pair of a part's edge and a wall's, however the parts are grouped.
+     */
+    static boolean searchForCollisions(RsSegment[] body, RsWall[] walls, int[] order, RsMotion motion) {
         boolean hit = false;
         for (int k = 0; k < walls.length; k++) {
             RsSegment[] edges = walls[order[k]].getSegmentArray();
-            // Once this part has a contact, a wall that can only be met later changes nothing.
+            // Once there is a contact, a wall that can only be met later changes nothing.
             if (hit && motion.cannotMeetBefore(body, body.length, edges, edges.length, motion.collisionTime)) {
                 continue;
             }

@@ -53,6 +53,40 @@ class SweptContactReachTest {
     }
 
     @Test
+    void wallsBesideOrBehindTheBandABodySweepsAreTurnedDownWithoutLosingAContact() {
+        Random random = new Random(19);
+        int turnedDown = 0;
+        for (int i = 0; i < CASES; i++) {
+            Drive d = Drive.random(random);
+            // Drives "for ever" now and then, and bodies as far from the plan's origin as an arena's corner.
+            double far = i % 5 == 0 ? 1.0e5 : 1.0;
+            double offset = i % 3 == 0 ? 60.0 : 0.0;
+            RsSegment[] body = moved(d.body, offset);
+            RsSegment[] wall = moved(d.wall, offset);
+            if (SweptContact.outOfLineBand(body, body.length, wall, wall.length, d.dx * far, d.dy * far)) {
+                turnedDown++;
+                assertEquals(Double.POSITIVE_INFINITY, SweptContact.lineSearch(body, body.length, wall, wall.length,
+                        d.dx * far, d.dy * far), 0.0, "case " + i + " was turned down");
+            }
+        }
+        assertTrue(turnedDown > CASES / 5, turnedDown + " of " + CASES + " turned down");
+        // A round robot of radius 0.1 m driving along x for ever, beside a pillar whose near side is 0.15 m
+        // off its path: turned down, though within the reach of the disc about its first vertex; a
+        // pillar across its band is not.
+        RsSegment[] robot = polygonOf(BodyOutline.circlePoints(0, 0, 0.1));
+        RsSegment[] beside = square(5, 0.15, 0.1);
+        assertTrue(SweptContact.outOfLineBand(robot, robot.length, beside, beside.length, 5.0e5, 0));
+        assertEquals(Double.POSITIVE_INFINITY, SweptContact.line(robot, robot.length, beside, beside.length, 5.0e5, 0));
+        RsSegment[] across = square(5, 0.05, 0.1);
+        assertTrue(!SweptContact.outOfLineBand(robot, robot.length, across, across.length, 5.0e5, 0));
+        assertTrue(Double.isFinite(SweptContact.line(robot, robot.length, across, across.length, 5.0e5, 0)));
+        // Behind the robot, and beyond where a 1 m drive ends.
+        RsSegment[] behind = square(-1, -0.05, 0.1);
+        assertTrue(SweptContact.outOfLineBand(robot, robot.length, behind, behind.length, 5.0e5, 0));
+        assertTrue(SweptContact.outOfLineBand(robot, robot.length, across, across.length, 1.0, 0));
+    }
+
+    @Test
     void wallsSkippedAsBeyondAContactFoundHaveNoEarlierContact() {
         Random random = new Random(13);
         int skipped = 0;
@@ -185,6 +219,27 @@ class SweptContactReachTest {
         double a = random.nextDouble() * 2 * Math.PI;
         double length = random.nextDouble() * 4;
         return new RsSegment[] {new RsSegment(x, y, x + length * Math.cos(a), y + length * Math.sin(a))};
+    }
+
+    /** The closed outline through the points x0, y0, x1, y1, ... */
+    private static RsSegment[] polygonOf(double[] p) {
+        int n = p.length / 2;
+        RsSegment[] edges = new RsSegment[n];
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            edges[i] = new RsSegment(p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1]);
+        }
+        return edges;
+    }
+
+    /** Copies of the edges moved by (offset, offset). */
+    private static RsSegment[] moved(RsSegment[] edges, double offset) {
+        RsSegment[] out = new RsSegment[edges.length];
+        for (int i = 0; i < edges.length; i++) {
+            RsSegment e = edges[i];
+            out[i] = new RsSegment(e.x + offset, e.y + offset, e.x + e.v.x + offset, e.y + e.v.y + offset);
+        }
+        return out;
     }
 
     private static RsSegment[] square(double x, double y, double side) {
