@@ -395,8 +395,9 @@ public class RsBody extends RsComponent {
             return false;
         }
         flagContactSensors(walls);
-        RsSegment[] outline = interactiveOutline();
-        boolean hit = outline.length > 0
+        // Most turns on the spot have no wall near: nothing to place the outlines for.
+        RsSegment[] outline = walls.length == 0 ? null : interactiveOutline();
+        boolean hit = outline != null && outline.length > 0
                 && RsBodyPart.searchForCollisions(outline, walls, RsBodyPart.nearestFirst(walls, motion), motion);
         if (motion.collision) {
             motion.truncateForCollision();
@@ -427,6 +428,9 @@ public class RsBody extends RsComponent {
             RsBodyContactSensor s = sensors[i];
             s.setCollision(false, null);
             s.setCollisionTime(Double.POSITIVE_INFINITY);
+            if (walls.length == 0) {
+                continue;
+            }
             RsSegment[] body = BodyOutline.mapInto(s.outline(), motion.transform0, outlines[i]);
             outlines[i] = body;
             for (RsWall wall : walls) {
