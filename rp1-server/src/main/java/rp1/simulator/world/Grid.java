@@ -241,9 +241,14 @@ final class Grid {
                 to = Math.min(c1, col(hi + wide));
             }
             for (int c = from; c <= to; c++) {
+                // An empty cell (most of a wall index's) is passed over before its distance is worked out.
+                int index = r * cols + c;
+                if (counts[index] == 0) {
+                    continue;
+                }
                 double cx = minX + (c + 0.5) * cell;
                 if (Outlines.squaredToSegment(cx, cy, x0, y0, x1, y1) <= reach * reach) {
-                    visitCell(r * cols + c, mark, visitor);
+                    visitCell(index, mark, visitor);
                 }
             }
         }
