@@ -85,7 +85,7 @@ final class Outlines {
     boolean overlaps(Outlines other) {
         for (int i = 0; i < xs.length; i++) {
             for (int j = 0; j < other.xs.length; j++) {
-                if (boxGap(i, other, j) <= 0.0 && polygonsOverlap(i, other, j)) {
+                if (boxGapSquared(i, other, j) <= 0.0 && polygonsOverlap(i, other, j)) {
                     return true;
                 }
             }
@@ -158,9 +158,17 @@ final class Outlines {
 
     /** How far apart the boxes of polygon i of this and polygon j of {@code o} are (0 if they overlap). */
     private double boxGap(int i, Outlines o, int j) {
+        return Math.sqrt(boxGapSquared(i, o, j));
+    }
+
+    /**
+     * {@link #boxGap} squared: whether boxes meet, without the square root (nine pairs of polygons at
+     * every overlap test of two wanderers); its square root is 0 exactly when it is.
+     */
+    private double boxGapSquared(int i, Outlines o, int j) {
         double dx = Math.max(0.0, Math.max(minX[i] - o.maxX[j], o.minX[j] - maxX[i]));
         double dy = Math.max(0.0, Math.max(minY[i] - o.maxY[j], o.minY[j] - maxY[i]));
-        return Math.sqrt(dx * dx + dy * dy);
+        return dx * dx + dy * dy;
     }
 
     /** Whether polygon i of this and polygon j of {@code o} overlap or touch. */
