@@ -29,6 +29,8 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
@@ -64,6 +66,12 @@ import rp1.simulator.outcome.Trail;
 public final class Batch {
     /** The results in the output folder. */
     private static final String RESULTS = "results.csv";
+    /**
+     * The longest the first run goes alone, milliseconds of wall time: long enough for a bumper run
+     * (0.2 s) to warm the process up for the others, short enough that a run of minutes, or one that
+     * hangs until --timeout, does not hold every other job back for as long.
+     */
+    private static final long FIRST_RUN_ALONE_MILLIS = 1_000;
 
     private final SweepOptions options;
     private final Path out;
@@ -463,8 +471,8 @@ public final class Batch {
     }
 
     /**
-     * Runs every run not {@link #kept()}, {@code --jobs} at a time (the first alone if the engine
-     * {@linkplain RunEngine#firstRunWarmsUp() gains by it}), adding each one's rows to
+     * Runs every run not {@link #kept()}, {@code --jobs} at a time (the first alone for up to a
+     * second if the engine {@linkplain RunEngine#firstRunWarmsUp() gains by it}), adding each one's rows to
      * {@code results.csv} as it ends; at the end rewrites {@code results.csv} in the order of the
      * runs. Stops early, with every run that finished, if {@link #stop()} is called.
      */
@@ -484,7 +492,11 @@ public final class Batch {
                 if (!finished.containsKey(r.dir())) {
                     if (futures.size() == 1 && engine.firstRunWarmsUp()) {
                         // Two cold bumper runs at once took 0.43 s each; the first alone 0.19 s.
-                        futures.get(0).get();
+                        try {
+                            futures.get(0).get(FIRST_RUN_ALONE_MILLIS, TimeUnit.MILLISECONDS);
+                        } catch (TimeoutException stillGoing) {
+                            // Warm by now: the others start beside it.
+                        }
                     }
                     futures.add(pool.submit(() -> {
                         Outcome o = stopping ? null : execute(r);

@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -121,6 +122,20 @@ class SweepTest {
         assertTrue(rows.get(1).contains(",124,timeout: still running after 2 s of wall time,"), rows.get(1));
     }
 
+    @Test
+    void aFirstRunThatHangsHoldsTheOtherJobsBackForASecondNotUntilItsTimeout() throws Exception {
+        // The first run goes alone to warm the process up; one that hangs (or runs for minutes) used to
+        // leave the other job idle until it ended.
+        Path p = properties("exitWhenClientsDone=true", "dlcName=" + SleepyDlc.class.getName());
+        int status = sweep("-p", p.toString(), "--seeds", "1-2", "--jobs", "2", "--timeout", "3", "--out",
+                dir.resolve("out").toString());
+        assertEquals(Sweep.RUN_FAILED, status, sweeps.out() + sweeps.err());
+        FileTime secondStarted = Files.getLastModifiedTime(dir.resolve("out/runs/2-home/run.ini"));
+        FileTime firstEnded = Files.getLastModifiedTime(dir.resolve("out/runs/1-home/result.txt"));
+        assertTrue(secondStarted.compareTo(firstEnded) < 0, "run 2 started at " + secondStarted
+                + ", run 1 ended at " + firstEnded);
+    }
+
     @ParameterizedTest
     @ValueSource(classes = {SpinningHandlerDlc.class, SpinningRunDlc.class})
     void aRobotThatComputesForEverIsStoppedWithItsRunInsteadOfKeepingAProcessorBusy(Class<?> robot) throws Exception {
@@ -150,7 +165,9 @@ class SweepTest {
         Path flag = write("keep-catching", "while this file is here");
         Path p = properties("exitWhenClientsDone=true", "dlcName=" + CatchingDlc.class.getName(), "param.flag=" + flag);
         try {
-            int status = sweep("-p", p.toString(), "--seeds", "1-3", "--jobs", "2", "--timeout", "1", "--out",
+            // One job, so that the first run has ended (and left its thread) before the next starts: with
+            // more, the runs started beside it before it ended stay in the sweep's process too.
+            int status = sweep("-p", p.toString(), "--seeds", "1-3", "--jobs", "1", "--timeout", "1", "--out",
                     dir.resolve("out").toString());
             assertEquals(Sweep.RUN_FAILED, status, sweeps.out() + sweeps.err());
             List<String> rows = Files.readAllLines(dir.resolve("out/results.csv"));
@@ -158,7 +175,7 @@ class SweepTest {
             for (String row : rows.subList(1, 4)) {
                 assertTrue(row.contains(",124,timeout: still running after 1 s of wall time,"), row);
             }
-            // The first run goes alone in the sweep's process; the two after it, each in a process of its own.
+            // The first run goes in the sweep's process; the two after it, each in a process of its own.
             assertTrue(Files.notExists(dir.resolve("out/runs/1-home/" + ProcessRuns.OUTPUT)));
             assertTrue(Files.exists(dir.resolve("out/runs/2-home/" + ProcessRuns.OUTPUT)));
             assertTrue(Files.exists(dir.resolve("out/runs/3-home/" + ProcessRuns.OUTPUT)));
