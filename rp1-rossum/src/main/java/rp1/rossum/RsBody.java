@@ -433,14 +433,15 @@ public class RsBody extends RsComponent {
             }
             RsSegment[] body = BodyOutline.mapInto(s.outline(), motion.transform0, outlines[i]);
             outlines[i] = body;
+            double[] prepared = motion.prepare(body, body.length);
             for (RsWall wall : walls) {
                 RsSegment[] edges = wall.getSegmentArray();
                 // A wall that can only be met after the earliest contact so far cannot flag a sensor.
                 if (earliest < Double.POSITIVE_INFINITY
-                        && motion.cannotMeetBefore(body, body.length, edges, edges.length, earliest)) {
+                        && motion.cannotMeetBefore(body, body.length, edges, edges.length, earliest, prepared)) {
                     continue;
                 }
-                double t = motion.contactTime(body, body.length, edges, edges.length);
+                double t = motion.contactTime(body, body.length, edges, edges.length, prepared);
                 if (t < earliest) {
                     earliest = t;
                     s.setCollision(true, wall.getName());

@@ -192,13 +192,14 @@ public abstract class RsBodyPart extends RsComponent {
      */
     static boolean searchForCollisions(RsSegment[] body, RsWall[] walls, int[] order, RsMotion motion) {
         boolean hit = false;
+        double[] prepared = motion.prepare(body, body.length);
         for (int k = 0; k < walls.length; k++) {
             RsSegment[] edges = walls[order[k]].getSegmentArray();
             // Once there is a contact, a wall that can only be met later changes nothing.
-            if (hit && motion.cannotMeetBefore(body, body.length, edges, edges.length, motion.collisionTime)) {
+            if (hit && motion.cannotMeetBefore(body, body.length, edges, edges.length, motion.collisionTime, prepared)) {
                 continue;
             }
-            if (motion.processCollision(body, body.length, edges, edges.length)) {
+            if (motion.processCollision(body, body.length, edges, edges.length, prepared)) {
                 hit = true;
             }
         }

@@ -174,6 +174,31 @@ public abstract class RsMotion extends RsComponent {
         return false;
     }
 
+    /**
+     * What {@link #processCollision(RsSegment[], int, RsSegment[], int, double[])} and
+     * {@link #cannotMeetBefore(RsSegment[], int, RsSegment[], int, double, double[])} can work out
+     * once for a body searched against many walls, or null (nothing to work out, or a subclass of the
+     * library's motions, which searches its own way).
+     */
+    double[] prepare(RsSegment[] body, int nBody) {
+        return null;
+    }
+
+    /** {@link #processCollision(RsSegment[], int, RsSegment[], int)}, given what {@link #prepare} gave. */
+    boolean processCollision(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double[] prepared) {
+        return processCollision(body, nBody, walls, nWalls);
+    }
+
+    /** {@link #cannotMeetBefore(RsSegment[], int, RsSegment[], int, double)}, given what {@link #prepare} gave. */
+    boolean cannotMeetBefore(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double t, double[] prepared) {
+        return cannotMeetBefore(body, nBody, walls, nWalls, t);
+    }
+
+    /** {@link #contactTime(RsSegment[], int, RsSegment[], int)}, given what {@link #prepare} gave. */
+    double contactTime(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double[] prepared) {
+        return contactTime(body, nBody, walls, nWalls);
+    }
+
     /** Records a contact time found by a search; returns whether there was one. */
     final boolean recordContact(double t) {
         if (Double.isInfinite(t)) {

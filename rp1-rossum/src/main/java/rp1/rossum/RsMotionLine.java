@@ -66,15 +66,44 @@ public class RsMotionLine extends RsMotion {
 
     @Override
     double contactTime(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls) {
-        double distance = velocity * timeTotal;
-        return timeTotal * SweptContact.line(body, nBody, walls, nWalls, distance * ux, distance * uy);
+        return contactTime(body, nBody, walls, nWalls, null);
     }
 
     @Override
     boolean cannotMeetBefore(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double t) {
+        return cannotMeetBefore(body, nBody, walls, nWalls, t, null);
+    }
+
+    /**
+     * The body's extents along and across the displacement, which every wall's test needs: worked out
+     * once per search instead of once per wall (in a crowd's arena, half the cost of testing a wall).
+     */
+    @Override
+    double[] prepare(RsSegment[] body, int nBody) {
+        if (getClass() != RsMotionLine.class) {
+            return null;
+        }
         double distance = velocity * timeTotal;
-        return timeTotal > 0.0
-                && SweptContact.lineBeyond(body, nBody, walls, nWalls, distance * ux, distance * uy, t / timeTotal);
+        return SweptContact.bodyExtents(body, nBody, distance * ux, distance * uy);
+    }
+
+    @Override
+    boolean processCollision(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double[] prepared) {
+        return prepared == null ? processCollision(body, nBody, walls, nWalls)
+                : recordContact(contactTime(body, nBody, walls, nWalls, prepared));
+    }
+
+    @Override
+    double contactTime(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double[] prepared) {
+        double distance = velocity * timeTotal;
+        return timeTotal * SweptContact.line(body, nBody, walls, nWalls, distance * ux, distance * uy, prepared);
+    }
+
+    @Override
+    boolean cannotMeetBefore(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double t, double[] prepared) {
+        double distance = velocity * timeTotal;
+        return timeTotal > 0.0 && SweptContact.lineBeyond(body, nBody, walls, nWalls, distance * ux, distance * uy,
+                t / timeTotal, prepared);
     }
 
     /**

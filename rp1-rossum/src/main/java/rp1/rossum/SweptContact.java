@@ -42,10 +42,33 @@ final class SweptContact {
      * or positive infinity if it does not.
      */
     static double line(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double dx, double dy) {
-        if (outOfLineBand(body, nBody, walls, nWalls, dx, dy) || outOfLineReach(body, nBody, walls, nWalls, dx, dy)) {
+        return line(body, nBody, walls, nWalls, dx, dy, null);
+    }
+
+    /**
+     * {@link #line}, given the body's {@link #bodyExtents} for this displacement (or null): a search
+     * of one body against many walls works them out once.
+     */
+    static double line(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double dx, double dy,
+                       double[] bodyExtents) {
+        if (outOfLineBand(body, nBody, walls, nWalls, dx, dy, bodyExtents)
+                || outOfLineReach(body, nBody, walls, nWalls, dx, dy)) {
             return Double.POSITIVE_INFINITY;
         }
         return lineSearch(body, nBody, walls, nWalls, dx, dy);
+    }
+
+    /**
+     * How far the body reaches along the displacement (dx, dy) and across it, as {@link #outOfLineBand}
+     * and {@link #lineBeyond} need them for every wall; null where they work without (no displacement,
+     * or one too long to square).
+     */
+    static double[] bodyExtents(RsSegment[] body, int nBody, double dx, double dy) {
+        double length = length(dx, dy);
+        if (nBody == 0 || !(length > 0.0) || length == Double.POSITIVE_INFINITY) {
+            return null;
+        }
+        return extents(body, nBody, dx / length, dy / length);
     }
 
     /**
@@ -69,13 +92,18 @@ final class SweptContact {
      * let through had no contact in two searches of five, and this one lets through 1 in 70 of those.
      */
     static boolean outOfLineBand(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double dx, double dy) {
+        return outOfLineBand(body, nBody, walls, nWalls, dx, dy, null);
+    }
+
+    private static boolean outOfLineBand(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double dx,
+                                         double dy, double[] bodyExtents) {
         double length = length(dx, dy);
         if (nBody == 0 || !(length > 0.0) || length == Double.POSITIVE_INFINITY) {
             return false;
         }
         double ux = dx / length;
         double uy = dy / length;
-        double[] b = extents(body, nBody, ux, uy);
+        double[] b = bodyExtents != null ? bodyExtents : extents(body, nBody, ux, uy);
         double[] w = extents(walls, nWalls, ux, uy);
         double slack = OUT_OF_REACH_SLACK * (1.0 + Math.max(b[SIZE], w[SIZE]));
         return w[RIGHT] > b[LEFT] + slack || w[LEFT] < b[RIGHT] - slack || w[FRONT] < b[BACK] - slack
@@ -120,6 +148,12 @@ final class SweptContact {
      */
     static boolean lineBeyond(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls,
                               double dx, double dy, double fraction) {
+        return lineBeyond(body, nBody, walls, nWalls, dx, dy, fraction, null);
+    }
+
+    /** {@link #lineBeyond}, given the body's {@link #bodyExtents} for this displacement (or null). */
+    static boolean lineBeyond(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls,
+                              double dx, double dy, double fraction, double[] bodyExtents) {
         double length = length(dx, dy);
         if (length == 0.0 || nBody == 0 || nWalls == 0) {
             return false;
@@ -127,9 +161,13 @@ final class SweptContact {
         double ux = dx / length;
         double uy = dy / length;
         double front = Double.NEGATIVE_INFINITY;
-        for (int i = 0; i < nBody; i++) {
-            RsSegment s = body[i];
-            front = Math.max(front, Math.max(s.x * ux + s.y * uy, (s.x + s.v.x) * ux + (s.y + s.v.y) * uy));
+        if (bodyExtents != null) {
+            front = bodyExtents[FRONT];
+        } else {
+            for (int i = 0; i < nBody; i++) {
+                RsSegment s = body[i];
+                front = Math.max(front, Math.max(s.x * ux + s.y * uy, (s.x + s.v.x) * ux + (s.y + s.v.y) * uy));
+            }
         }
         double back = Double.POSITIVE_INFINITY;
         for (int j = 0; j < nWalls; j++) {

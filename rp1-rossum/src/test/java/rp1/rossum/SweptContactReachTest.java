@@ -68,6 +68,15 @@ class SweptContactReachTest {
                 assertEquals(Double.POSITIVE_INFINITY, SweptContact.lineSearch(body, body.length, wall, wall.length,
                         d.dx * far, d.dy * far), 0.0, "case " + i + " was turned down");
             }
+            // A search of one body against many walls works the body's extents out once: the same answers.
+            double[] extents = SweptContact.bodyExtents(body, body.length, d.dx * far, d.dy * far);
+            assertEquals(SweptContact.line(body, body.length, wall, wall.length, d.dx * far, d.dy * far),
+                    SweptContact.line(body, body.length, wall, wall.length, d.dx * far, d.dy * far, extents), 0.0,
+                    "case " + i);
+            double found = random.nextDouble();
+            assertEquals(SweptContact.lineBeyond(body, body.length, wall, wall.length, d.dx * far, d.dy * far, found),
+                    SweptContact.lineBeyond(body, body.length, wall, wall.length, d.dx * far, d.dy * far, found,
+                            extents), "case " + i);
         }
         assertTrue(turnedDown > CASES / 5, turnedDown + " of " + CASES + " turned down");
         // A round robot of radius 0.1 m driving along x for ever, beside a pillar whose near side is 0.15 m
