@@ -395,10 +395,13 @@ public class RsBody extends RsComponent {
             return false;
         }
         flagContactSensors(walls);
+        boolean hit = false;
         // Most turns on the spot have no wall near: nothing to place the outlines for.
-        RsSegment[] outline = walls.length == 0 ? null : interactiveOutline();
-        boolean hit = outline != null && outline.length > 0
-                && RsBodyPart.searchForCollisions(outline, walls, RsBodyPart.nearestFirst(walls, motion), motion);
+        if (walls.length > 0) {
+            RsSegment[] outline = interactiveOutline();
+            hit = outline.length > 0
+                    && RsBodyPart.searchForCollisions(outline, walls, RsBodyPart.nearestFirst(walls, motion), motion);
+        }
         if (motion.collision) {
             motion.truncateForCollision();
             if (motion.timeTotal == 0.0) {

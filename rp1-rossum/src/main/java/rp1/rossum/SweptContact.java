@@ -97,14 +97,12 @@ final class SweptContact {
 
     private static boolean outOfLineBand(RsSegment[] body, int nBody, RsSegment[] walls, int nWalls, double dx,
                                          double dy, double[] bodyExtents) {
-        double length = length(dx, dy);
-        if (nBody == 0 || !(length > 0.0) || length == Double.POSITIVE_INFINITY) {
+        double[] b = bodyExtents != null ? bodyExtents : bodyExtents(body, nBody, dx, dy);
+        if (b == null) {
             return false;
         }
-        double ux = dx / length;
-        double uy = dy / length;
-        double[] b = bodyExtents != null ? bodyExtents : extents(body, nBody, ux, uy);
-        double[] w = extents(walls, nWalls, ux, uy);
+        double length = length(dx, dy);
+        double[] w = extents(walls, nWalls, dx / length, dy / length);
         double slack = OUT_OF_REACH_SLACK * (1.0 + Math.max(b[SIZE], w[SIZE]));
         return w[RIGHT] > b[LEFT] + slack || w[LEFT] < b[RIGHT] - slack || w[FRONT] < b[BACK] - slack
                 || w[BACK] > b[FRONT] + length + slack + OUT_OF_REACH_SLACK * length;
@@ -160,20 +158,8 @@ final class SweptContact {
         }
         double ux = dx / length;
         double uy = dy / length;
-        double front = Double.NEGATIVE_INFINITY;
-        if (bodyExtents != null) {
-            front = bodyExtents[FRONT];
-        } else {
-            for (int i = 0; i < nBody; i++) {
-                RsSegment s = body[i];
-                front = Math.max(front, Math.max(s.x * ux + s.y * uy, (s.x + s.v.x) * ux + (s.y + s.v.y) * uy));
-            }
-        }
-        double back = Double.POSITIVE_INFINITY;
-        for (int j = 0; j < nWalls; j++) {
-            RsSegment e = walls[j];
-            back = Math.min(back, Math.min(e.x * ux + e.y * uy, (e.x + e.v.x) * ux + (e.y + e.v.y) * uy));
-        }
+        double front = (bodyExtents != null ? bodyExtents : extents(body, nBody, ux, uy))[FRONT];
+        double back = extents(walls, nWalls, ux, uy)[BACK];
         double slack = ROUNDING_SLACK * (1.0 + Math.abs(body[0].x) + Math.abs(body[0].y) + length);
         return back - front > fraction * length + slack;
     }
