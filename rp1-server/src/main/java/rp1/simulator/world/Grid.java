@@ -89,11 +89,23 @@ final class Grid {
     }
 
     private int col(double x) {
-        return Math.max(0, Math.min(cols - 1, (int) Math.floor((x - minX) / cell)));
+        return cellOf((x - minX) / cell, cols);
     }
 
     private int row(double y) {
-        return Math.max(0, Math.min(rows - 1, (int) Math.floor((y - minY) / cell)));
+        return cellOf((y - minY) / cell, rows);
+    }
+
+    /**
+     * The cell {@code at} cells from the grid's edge lies in, clamped to 0..count-1 (NaN to 0): the
+     * floor of {@code at} without {@code Math.floor}, which a sweep's quickly compiled code calls as a
+     * method on every move of a robot (a cast truncates, and truncating is flooring from 0 up).
+     */
+    private static int cellOf(double at, int count) {
+        if (!(at >= 1.0)) {
+            return 0;
+        }
+        return at >= count - 1 ? count - 1 : (int) at;
     }
 
     /** Adds item {@code id} over the box [x0, x1] x [y0, y1]. */
