@@ -60,6 +60,20 @@ public abstract class RsObject {
         return isGeometrySet ? computeBounds() : new RsRectangle();
     }
 
+    /**
+     * Gives {@code copy} what every object has (name, colours, label, selection, bounds given, whether
+     * its geometry is set), for {@link RsPlan#copy()}.
+     */
+    void copyCommonTo(RsObject copy) {
+        copy.name = name;
+        copy.isGeometrySet = isGeometrySet;
+        copy.selected = selected;
+        copy.fillColor = fillColor;
+        copy.lineColor = lineColor;
+        copy.label = label;
+        copy.explicitBounds = explicitBounds == null ? null : new RsRectangle(explicitBounds);
+    }
+
     /** Overrides the bounds computed from the geometry; null restores them. */
     public void setBounds(RsRectangle bounds) {
         explicitBounds = bounds == null ? null : new RsRectangle(bounds);

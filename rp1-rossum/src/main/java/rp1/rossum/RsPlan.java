@@ -207,6 +207,29 @@ public class RsPlan {
     }
 
     /**
+     * A copy of this plan that shares nothing a run changes: the same objects in the same order, with
+     * the same names, numbers (to the bit), colours, labels and selection, the navigation network's
+     * links joining the copied nodes, and a random source started anew as a parsed plan's is. A sweep
+     * parses each floor plan once and gives every run a copy, since a run selects targets and sets
+     * the random source of its own plan. The units are shared (they are constants).
+     *
+     * @return the copy
+     * @throws IllegalStateException if the plan holds an object of a class other than the plan's
+     *         own types (a subclass may hold fields a copy cannot know of)
+     */
+    public synchronized RsPlan copy() {
+        RsPlan copy = new RsPlan(fileName);
+        copy.caption = caption;
+        copy.units = units;
+        copy.serialNumber = serialNumber;
+        PlanCopy objects = new PlanCopy(copy);
+        for (RsObject o : this.objects) {
+            copy.addObject(objects.of(o));
+        }
+        return copy;
+    }
+
+    /**
      * The random source used for random target selection. The simulator sets its seeded source so
      * that runs are repeatable.
      */

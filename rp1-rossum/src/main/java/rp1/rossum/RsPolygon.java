@@ -27,6 +27,17 @@ public class RsPolygon implements Serializable {
     public int orientation;
 
     /**
+     * A copy of {@code p} with the edges {@code segment} (copies of its own): every field as it is,
+     * with nothing computed again, so that the copy's numbers are the original's to the bit.
+     */
+    RsPolygon(RsPolygon p, RsSegment[] segment) {
+        this.nSegment = p.nSegment;
+        this.segment = segment;
+        this.area = p.area;
+        this.orientation = p.orientation;
+    }
+
+    /**
      * A polygon from its first {@code nSegment} edges, which must join end to start and close.
      *
      * @throws RsPolygonException if there are fewer than three edges or the area is zero

@@ -8,6 +8,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Supplier;
 
+import rp1.planparser.ParsedPlans;
 import rp1.simulator.launch.ExitStatus;
 import rp1.simulator.launch.RunningServer;
 
@@ -34,6 +35,8 @@ import rp1.simulator.launch.RunningServer;
 final class LoaderRuns implements RunEngine {
     private final RunClassLoader.Source classes;
     private final double timeoutSeconds;
+    /** Each floor plan parsed once, a copy for each run. */
+    private final ParsedPlans plans = new ParsedPlans();
     private final Set<RunningServer> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
     /** Makes the engine the runs go on with once a run left a thread running; null: none (a Spark task's one run). */
@@ -124,7 +127,7 @@ final class LoaderRuns implements RunEngine {
         try {
             // The robot's threads, and any library it uses that asks the context, see its own classes.
             thread.setContextClassLoader(loader);
-            SweepRun here = new SweepRun(run.dir(), loader);
+            SweepRun here = new SweepRun(run.dir(), loader, plans);
             RunReport report = here.run(server -> {
                 mine.set(server);
                 running.add(server);

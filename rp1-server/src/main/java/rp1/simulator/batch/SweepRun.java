@@ -20,6 +20,7 @@ import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 
 import rp1.io.IoFailures;
+import rp1.planparser.ParsedPlans;
 import rp1.simulator.Simulation;
 import rp1.simulator.config.ServerArguments;
 import rp1.simulator.launch.ClientClassPath;
@@ -57,13 +58,16 @@ public final class SweepRun {
 
     private final Path dir;
     private final ClassLoader loader;
+    /** The plans parsed once for the sweep's runs in this process; null: the run parses its own. */
+    private final ParsedPlans plans;
     private RunStatistics statistics;
     private List<RobotResult> robots = List.of();
     private double endTime = Double.NaN;
 
-    SweepRun(Path dir, ClassLoader loader) {
+    SweepRun(Path dir, ClassLoader loader, ParsedPlans plans) {
         this.dir = dir;
         this.loader = loader;
+        this.plans = plans;
     }
 
     /** Runs the run in the folder given; the process exits with the server's status. */
@@ -90,7 +94,7 @@ public final class SweepRun {
                 System.exit(ExitStatus.STARTUP_FAILED);
             }
         }
-        SweepRun run = new SweepRun(Paths.get(args[0]).toAbsolutePath(), robots);
+        SweepRun run = new SweepRun(Paths.get(args[0]).toAbsolutePath(), robots, null);
         RunReport report;
         try {
             report = run.run(started::complete, Double.POSITIVE_INFINITY);
@@ -121,7 +125,7 @@ public final class SweepRun {
         try {
             server = ServerLauncher.start(new String[] {"-p", dir.resolve(PROPERTIES).toString()},
                     Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch)
-                            .withClassLoader(loader));
+                            .withClassLoader(loader).withPlans(plans));
         } catch (StartupException e) {
             return report(RunReport.failed("startup failed: " + e.getMessage(), e.getExitStatus()));
         }

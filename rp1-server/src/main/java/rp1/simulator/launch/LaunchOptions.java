@@ -2,10 +2,13 @@ package rp1.simulator.launch;
 
 import java.util.OptionalInt;
 
+import rp1.planparser.ParsedPlans;
+
 /**
  * How to launch a server beyond its command line: a port that replaces the properties' one (0 for
- * any free port, which tests use), the view, and the class loader its clients' classes and
- * class-path resources come from (a sweep gives each run one of its own). Immutable; start from
+ * any free port, which tests use), the view, the class loader its clients' classes and class-path
+ * resources come from (a sweep gives each run one of its own), and where its floor plan comes from
+ * (a sweep's runs in one process share the plans parsed once). Immutable; start from
  * {@link #defaults()}.
  */
 public final class LaunchOptions {
@@ -13,16 +16,19 @@ public final class LaunchOptions {
     final ViewHook view;
     /** Null for the thread's context class loader. */
     final ClassLoader loader;
+    /** Null: the server parses its floor plan itself. */
+    final ParsedPlans plans;
 
-    private LaunchOptions(OptionalInt port, ViewHook view, ClassLoader loader) {
+    private LaunchOptions(OptionalInt port, ViewHook view, ClassLoader loader, ParsedPlans plans) {
         this.port = port;
         this.view = view;
         this.loader = loader;
+        this.plans = plans;
     }
 
     /** The properties' port and the standard view. */
     public static LaunchOptions defaults() {
-        return new LaunchOptions(OptionalInt.empty(), ViewHook.standard(), null);
+        return new LaunchOptions(OptionalInt.empty(), ViewHook.standard(), null, null);
     }
 
     /** Listens on {@code port} whatever the properties say; 0 picks a free port. */
@@ -30,16 +36,21 @@ public final class LaunchOptions {
         if (port < 0 || port > 65535) {
             throw new IllegalArgumentException("port must be in [0, 65535], got " + port);
         }
-        return new LaunchOptions(OptionalInt.of(port), view, loader);
+        return new LaunchOptions(OptionalInt.of(port), view, loader, plans);
     }
 
     /** Uses {@code view} when the properties enable the GUI. */
     public LaunchOptions withView(ViewHook view) {
-        return new LaunchOptions(port, view, loader);
+        return new LaunchOptions(port, view, loader, plans);
     }
 
     /** Loads the clients' classes (and looks for class-path resources) with {@code loader}. */
     public LaunchOptions withClassLoader(ClassLoader loader) {
-        return new LaunchOptions(port, view, loader);
+        return new LaunchOptions(port, view, loader, plans);
+    }
+
+    /** Takes the floor plan from {@code plans} (a copy of one parsed once for many runs) instead of parsing it. */
+    public LaunchOptions withPlans(ParsedPlans plans) {
+        return new LaunchOptions(port, view, loader, plans);
     }
 }

@@ -9,6 +9,7 @@ import java.util.SortedMap;
 import java.util.TreeMap;
 
 import rp1.io.IoFailures;
+import rp1.planparser.ParsedPlans;
 import rp1.planparser.RsParsingException;
 import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsPlan;
@@ -70,7 +71,7 @@ public final class ServerLauncher {
             config.warnings.forEach(log::important);
             ResourceLocator.Found planText = readPlan(config, locator, log);
             long seed = config.randomSeed.orElse(System.nanoTime());
-            Simulation simulation = simulate(config, planText, seed, log);
+            Simulation simulation = simulate(config, planText, options.plans, seed, log);
             records = keepRecords(config, workingDirectory, simulation, planText, seed, log);
             ClientLauncher launcher = ClientLauncher.create(config, log, loader);
             ClientRegistry registry = new ClientRegistry(log);
@@ -140,9 +141,9 @@ public final class ServerLauncher {
     }
 
     /** Parses the floor plan and creates the simulation, seeded (and the seed logged, to repeat the run). */
-    private static Simulation simulate(ServerConfig config, ResourceLocator.Found text, long seed, ServerLog log)
-            throws StartupException {
-        RsPlan plan = parse(config, text);
+    private static Simulation simulate(ServerConfig config, ResourceLocator.Found text, ParsedPlans plans, long seed,
+                                       ServerLog log) throws StartupException {
+        RsPlan plan = parse(config, text, plans);
         log.log("randomSeed=" + seed + (config.randomSeed.isPresent() ? "" : "; set it to repeat this run"));
         Simulation simulation = new Simulation(plan, SimulationSettings.of(config, seed), log);
         simulation.setClientBudgets(config.clientBudgets);
@@ -155,9 +156,10 @@ public final class ServerLauncher {
         return simulation;
     }
 
-    private static RsPlan parse(ServerConfig config, ResourceLocator.Found text) throws StartupException {
+    /** The plan {@code text} holds: parsed here, or a copy of the one {@code plans} (when not null) parsed before. */
+    private static RsPlan parse(ServerConfig config, ResourceLocator.Found text, ParsedPlans plans) throws StartupException {
         try {
-            return RsPlanParser.parse(text.reader(), text.location);
+            return plans != null ? plans.copyOf(text.text, text.location) : RsPlanParser.parse(text.reader(), text.location);
         } catch (RsParsingException e) {
             throw new StartupException(e.getMessage());
         } catch (IOException e) {
@@ -202,7 +204,7 @@ public final class ServerLauncher {
             log.log("Network client connections disabled (in response to configuration option)");
             return null;
         }
-        WarmUp.run(parse(config, planText));
+        WarmUp.run(parse(config, planText, null));
         try {
             ClientListener listener = ClientListener.bind(config.bindAddress, port, simulation, registry, log,
                     new ClientListener.Settings(config.connectTimeout, config.clientQueueLimit, config.clientBudgets)
