@@ -37,6 +37,8 @@ final class LoaderRuns implements RunEngine {
     private final double timeoutSeconds;
     /** Each floor plan parsed once, a copy for each run. */
     private final ParsedPlans plans = new ParsedPlans();
+    /** The runs' client starters and stops, on threads kept from run to run. */
+    private final KeptThreads helpers = new KeptThreads();
     private final Set<RunningServer> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
     /** Makes the engine the runs go on with once a run left a thread running; null: none (a Spark task's one run). */
@@ -127,7 +129,7 @@ final class LoaderRuns implements RunEngine {
         try {
             // The robot's threads, and any library it uses that asks the context, see its own classes.
             thread.setContextClassLoader(loader);
-            SweepRun here = new SweepRun(run.dir(), loader, plans);
+            SweepRun here = new SweepRun(run.dir(), loader, plans, helpers);
             RunReport report = here.run(server -> {
                 mine.set(server);
                 running.add(server);
@@ -155,6 +157,7 @@ final class LoaderRuns implements RunEngine {
         if (instead != null) {
             instead.close();
         }
+        helpers.close();
         // The shared loader's classes stay usable (a loaded class needs no open jar); only its jars
         // and the loader's own resources are let go. The note stays for the sweep's last line.
         if (sharing != null && sharing.loader() != null) {

@@ -26,6 +26,7 @@ import rp1.simulator.config.ServerArguments;
 import rp1.simulator.launch.ClientClassPath;
 import rp1.simulator.launch.ExitCaller;
 import rp1.simulator.launch.ExitStatus;
+import rp1.simulator.launch.HelperThreads;
 import rp1.simulator.launch.LaunchOptions;
 import rp1.simulator.launch.RunningServer;
 import rp1.simulator.launch.ServerLauncher;
@@ -60,14 +61,17 @@ public final class SweepRun {
     private final ClassLoader loader;
     /** The plans parsed once for the sweep's runs in this process; null: the run parses its own. */
     private final ParsedPlans plans;
+    /** Where the server starts its client starter and its stop. */
+    private final HelperThreads helpers;
     private RunStatistics statistics;
     private List<RobotResult> robots = List.of();
     private double endTime = Double.NaN;
 
-    SweepRun(Path dir, ClassLoader loader, ParsedPlans plans) {
+    SweepRun(Path dir, ClassLoader loader, ParsedPlans plans, HelperThreads helpers) {
         this.dir = dir;
         this.loader = loader;
         this.plans = plans;
+        this.helpers = helpers;
     }
 
     /** Runs the run in the folder given; the process exits with the server's status. */
@@ -94,7 +98,7 @@ public final class SweepRun {
                 System.exit(ExitStatus.STARTUP_FAILED);
             }
         }
-        SweepRun run = new SweepRun(Paths.get(args[0]).toAbsolutePath(), robots, null);
+        SweepRun run = new SweepRun(Paths.get(args[0]).toAbsolutePath(), robots, null, HelperThreads.NEW_THREADS);
         RunReport report;
         try {
             report = run.run(started::complete, Double.POSITIVE_INFINITY);
@@ -125,7 +129,7 @@ public final class SweepRun {
         try {
             server = ServerLauncher.start(new String[] {"-p", dir.resolve(PROPERTIES).toString()},
                     Paths.get("").toAbsolutePath(), LaunchOptions.defaults().withPort(0).withView(this::watch)
-                            .withClassLoader(loader).withPlans(plans));
+                            .withClassLoader(loader).withPlans(plans).withHelperThreads(helpers));
         } catch (StartupException e) {
             return report(RunReport.failed("startup failed: " + e.getMessage(), e.getExitStatus()));
         }

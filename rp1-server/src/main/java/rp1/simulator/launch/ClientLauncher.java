@@ -107,7 +107,7 @@ final class ClientLauncher implements LoadedClient.Listener {
 
     /**
      * Connects every client to {@code simulation}, in order, then starts their threads one after the
-     * other on a thread of its own (see the class comment), and then runs {@code whenStarted} on it:
+     * other on a thread {@code helpers} gives (see the class comment), and then runs {@code whenStarted} on it:
      * once every client's {@code initialize()} has returned and the server has dealt with the requests
      * an in-process one sent meanwhile, or its {@code connectTimeout} has passed. A lockstep simulation
      * starts its clock then, so a run's first requests are all stamped at time 0, in the order of
@@ -115,7 +115,8 @@ final class ClientLauncher implements LoadedClient.Listener {
      *
      * @param port the port of the server's listener, for clients that connect over TCP (-1 if none)
      */
-    void launch(Simulation simulation, ClientRegistry registry, int port, Outcome whenDone, Runnable whenStarted)
+    void launch(Simulation simulation, ClientRegistry registry, int port, Outcome whenDone, HelperThreads helpers,
+                Runnable whenStarted)
             throws IOException {
         outcome = whenDone;
         for (LoadedClient c : clients) {
@@ -135,9 +136,7 @@ final class ClientLauncher implements LoadedClient.Listener {
                         simulation.getSeed(), simulation.getReportedResults(), session));
             }
         }
-        Thread starter = new Thread(() -> startInOrder(whenStarted), "dlc start");
-        starter.setDaemon(true);
-        starter.start();
+        helpers.start("dlc start", true, () -> startInOrder(whenStarted));
     }
 
     /**

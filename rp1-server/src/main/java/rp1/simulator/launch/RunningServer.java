@@ -60,9 +60,11 @@ public final class RunningServer {
         final ClientLauncher launcher;
         final ViewHook viewHook;
         final RunRecords records;
+        final HelperThreads helpers;
 
         Parts(ServerConfig config, ServerLog log, Simulation simulation, ClientRegistry registry,
-              ClientListener listener, ClientLauncher launcher, ViewHook viewHook, RunRecords records) {
+              ClientListener listener, ClientLauncher launcher, ViewHook viewHook, RunRecords records,
+              HelperThreads helpers) {
             this.config = config;
             this.log = log;
             this.simulation = simulation;
@@ -71,6 +73,7 @@ public final class RunningServer {
             this.launcher = launcher;
             this.viewHook = viewHook;
             this.records = records;
+            this.helpers = helpers;
         }
     }
 
@@ -136,7 +139,7 @@ public final class RunningServer {
         // In lockstep the clock waits until the loaded clients have started, in order (ClientLauncher).
         boolean waitForClients = c.lockstep && !parts.launcher.isEmpty();
         try {
-            parts.launcher.launch(parts.simulation, parts.registry, getPort(), new ClientOutcome(),
+            parts.launcher.launch(parts.simulation, parts.registry, getPort(), new ClientOutcome(), parts.helpers,
                     waitForClients ? parts.simulation::startClock : () -> { });
         } catch (IOException e) {
             throw new StartupException("cannot launch the loaded clients: " + e.getMessage());
@@ -240,8 +243,7 @@ public final class RunningServer {
             return;
         }
         stopReason = reason;
-        Thread t = new Thread(() -> shutDown(status), "shutdown");
-        t.start();
+        parts.helpers.start("shutdown", false, () -> shutDown(status));
     }
 
     /**

@@ -77,7 +77,8 @@ public final class ServerLauncher {
             ClientRegistry registry = new ClientRegistry(log);
             int port = options.port.orElse(arguments.port.orElse(config.port));
             listener = listen(config, port, simulation, planText, registry, log);
-            parts = new RunningServer.Parts(config, log, simulation, registry, listener, launcher, options.view, records);
+            parts = new RunningServer.Parts(config, log, simulation, registry, listener, launcher, options.view, records,
+                    options.helpers);
         } catch (StartupException | RuntimeException e) {
             if (listener != null) {
                 listener.close();
