@@ -35,8 +35,8 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 import rp1.io.IoFailures;
+import rp1.planparser.ParsedPlans;
 import rp1.planparser.RsParsingException;
-import rp1.planparser.RsPlanParser;
 import rp1.rossum.RsPlan;
 import rp1.rossum.RsRunContext;
 import rp1.rossum.RsSegment;
@@ -153,9 +153,11 @@ public final class Batch {
             List<String> names = options.plans.isEmpty() ? List.of(planName) : options.plans;
             Map<String, RsPlan> plans = new LinkedHashMap<>();
             Map<String, String> planTexts = new LinkedHashMap<>();
+            // Parsed here once for the whole sweep: the runs in this process get copies of these.
+            ParsedPlans parsed = new ParsedPlans();
             for (String name : names) {
                 ResourceLocator.Found text = locator.plan(name);
-                RsPlan plan = plan(text);
+                RsPlan plan = plan(parsed, text);
                 planTexts.put(name, text.text + imagedWalls(name, text.text, plan));
                 plans.put(name, plan);
             }
@@ -192,7 +194,7 @@ public final class Batch {
             }
             RunEngine engine = options.isolation == SweepOptions.Isolation.PROCESS
                     ? RunEngine.inProcesses(options.timeoutSeconds, classPath)
-                    : inThisProcess(robotClasses, robots, options.timeoutSeconds, classPath);
+                    : inThisProcess(robotClasses, robots, options.timeoutSeconds, classPath, parsed);
             return new Batch(options, out, found.text, plans, runs, spec, kept, classPath, engine);
         } catch (ConfigException e) {
             throw new SweepException(e.getMessage());
@@ -208,8 +210,8 @@ public final class Batch {
      * go to processes of their own ({@link LoaderRuns}).
      */
     private static RunEngine inThisProcess(Collection<String> robotClasses, ClassLoader robots, double timeoutSeconds,
-                                           List<Path> classPath) {
-        LoaderRuns here = new LoaderRuns(new ArrayList<>(robotClasses), robots, timeoutSeconds,
+                                           List<Path> classPath, ParsedPlans plans) {
+        LoaderRuns here = new LoaderRuns(new ArrayList<>(robotClasses), robots, timeoutSeconds, plans,
                 () -> RunEngine.inProcesses(timeoutSeconds, classPath));
         Optional<String> exits = here.exitCall();
         if (exits.isEmpty()) {
@@ -337,11 +339,14 @@ public final class Batch {
         return lower.endsWith(".yaml") || lower.endsWith(".yml") || text.contains("bitmap");
     }
 
-    private static RsPlan plan(ResourceLocator.Found text) throws SweepException {
+    /** The sweep's own copy of the plan {@code text} holds (for its picture), parsed into {@code parsed}. */
+    private static RsPlan plan(ParsedPlans parsed, ResourceLocator.Found text) throws SweepException {
         try {
-            return RsPlanParser.parse(text.text, text.location);
+            return parsed.copyOf(text.text, text.location);
         } catch (RsParsingException e) {
             throw new SweepException(e.getMessage());
+        } catch (IOException e) {
+            throw new SweepException(text.location + ": cannot read the plan's map: " + IoFailures.why(e));
         }
     }
 

@@ -36,7 +36,7 @@ final class LoaderRuns implements RunEngine {
     private final RunClassLoader.Source classes;
     private final double timeoutSeconds;
     /** Each floor plan parsed once, a copy for each run. */
-    private final ParsedPlans plans = new ParsedPlans();
+    private final ParsedPlans plans;
     /** The runs' client starters and stops, on threads kept from run to run. */
     private final KeptThreads helpers = new KeptThreads();
     private final Set<RunningServer> running = ConcurrentHashMap.newKeySet();
@@ -60,12 +60,15 @@ final class LoaderRuns implements RunEngine {
     }
 
     /**
+     * @param plans      the floor plans parsed for the sweep, of which each run gets a copy
      * @param afterStuck makes the engine for the runs after one that left a thread running (null: go
      *                   on in this process)
      */
-    LoaderRuns(List<String> robotClasses, ClassLoader parent, double timeoutSeconds, Supplier<RunEngine> afterStuck) {
+    LoaderRuns(List<String> robotClasses, ClassLoader parent, double timeoutSeconds, ParsedPlans plans,
+               Supplier<RunEngine> afterStuck) {
         this.classes = RunClassLoader.source(robotClasses, parent);
         this.timeoutSeconds = timeoutSeconds;
+        this.plans = plans;
         this.afterStuck = afterStuck;
     }
 

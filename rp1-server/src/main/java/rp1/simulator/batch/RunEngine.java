@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 
+import rp1.planparser.ParsedPlans;
 import rp1.simulator.outcome.Trail;
 
 /**
@@ -57,7 +58,7 @@ public interface RunEngine extends AutoCloseable {
      * @param robotClasses the robots' classes (dlcName), found through {@code parent}
      */
     static RunEngine inThisProcess(List<String> robotClasses, ClassLoader parent, double timeoutSeconds) {
-        return new LoaderRuns(robotClasses, parent, timeoutSeconds, null);
+        return new LoaderRuns(robotClasses, parent, timeoutSeconds, new ParsedPlans(), null);
     }
 
     /**
