@@ -27,8 +27,12 @@ import rp1.simulator.launch.JavaCommand;
  */
 public final class SweepBench {
     private static final int TRIES = 3;
-    /** Pairs of the one run and the 64-run sweep, timed alternately. */
-    private static final int PAIRS = 8;
+    /**
+     * Pairs of the one run and the 64-run sweep, timed alternately. With 8, the median ratio of one
+     * build moved from 1.92 to 2.37 between sittings of the same hour on this project's shared
+     * two-core machine (docs/performance.md); 16 halve that spread's effect for 10 s more.
+     */
+    private static final int PAIRS = 16;
     /** The options bin/rp1 starts a simulation's JVM with. */
     private static final List<String> SIMULATOR = JavaCommand.simulatorOptions();
     /** The options bin/rp1 starts a sweep's JVM with on this machine. */
