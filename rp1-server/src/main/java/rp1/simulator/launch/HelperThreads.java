@@ -5,9 +5,12 @@ package rp1.simulator.launch;
  * one after another ({@code dlc start}) and stopping ({@code shutdown}). A server of its own starts a
  * new thread for each ({@link #NEW_THREADS}); a sweep, which runs thousands of servers in one process,
  * hands them to threads it keeps (a new thread costs a stack mapped and unmapped, the JVM's
- * bookkeeping and two hand-offs between threads, and two of them per run were a fifth of a bumper
- * run's cost: docs/performance.md). Neither task runs a robot's code, so a kept thread carries nothing of one
- * run into the next. The simulation's own thread, which runs the robots' handlers, is always new.
+ * bookkeeping and two hand-offs between threads: a twentieth of a long sweep's time, as
+ * docs/performance.md measures). The client starter runs no robot code; the stop runs only a robot's
+ * shutdown handler, as its session closes. A thread-local value could pass from one run's stop to the
+ * next on a kept thread only through a thread-local the robot's classes do not own: one they own is
+ * made anew with every run, since a class holding one in a static field is loaded anew for every run
+ * ({@code StaticState}). The simulation's own thread, which runs the robots' handlers, is always new.
  */
 @FunctionalInterface
 public interface HelperThreads {
