@@ -54,18 +54,34 @@ public final class ServerMain {
      * closed, log, recording and event log flushed). Returns the exit status.
      */
     public static int awaitExit(RunningServer server) {
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> stopQuietly(server), "shutdown hook"));
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> stopInHook(server), "shutdown hook"));
         try {
             return server.awaitExit();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            return stopQuietly(server);
+            return stopQuietly(server, ExitCaller.outsideTheSimulator());
         }
     }
 
-    private static int stopQuietly(RunningServer server) {
+    /**
+     * Stops the server as the process ends. A loaded robot that called {@code System.exit} would end
+     * the process with the status it chose (0, as often as not) although its run failed: once the
+     * server has stopped and closed its files, the process ends with the run's status instead,
+     * {@link ExitStatus#CLIENT_FAILED}, without waiting for the other hooks (the robot's own, files it
+     * marked to delete on exit).
+     */
+    private static void stopInHook(RunningServer server) {
+        Optional<String> exitCall = ExitCaller.outsideTheSimulator();
+        int status = stopQuietly(server, exitCall);
+        if (exitCall.isPresent()) {
+            System.out.flush();
+            System.err.flush();
+            Runtime.getRuntime().halt(status);
+        }
+    }
+
+    private static int stopQuietly(RunningServer server, Optional<String> exitCall) {
         try {
-            Optional<String> exitCall = ExitCaller.outsideTheSimulator();
             return exitCall.isPresent() ? server.stopForExitCall(exitCall.get()) : server.stop();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
