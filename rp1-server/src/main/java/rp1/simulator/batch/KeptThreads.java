@@ -22,9 +22,15 @@ final class KeptThreads implements HelperThreads, AutoCloseable {
     private static final long KEEP_ALIVE_SECONDS = 60;
 
     private final AtomicInteger made = new AtomicInteger();
+    /**
+     * The group of the thread that made this, for every kept thread: not the group of whichever thread
+     * asked first (a robot's, when a robot's thread asks the server to stop), whose threads are ended
+     * with its run.
+     */
+    private final ThreadGroup group = Thread.currentThread().getThreadGroup();
     private final ExecutorService threads = new ThreadPoolExecutor(0, Integer.MAX_VALUE, KEEP_ALIVE_SECONDS,
             TimeUnit.SECONDS, new SynchronousQueue<>(), task -> {
-                Thread t = new Thread(task, IDLE + "-" + made.incrementAndGet());
+                Thread t = new Thread(group, task, IDLE + "-" + made.incrementAndGet());
                 t.setDaemon(true);
                 // Not the loader of the run that happened to make it: an idle thread keeps no run's classes.
                 t.setContextClassLoader(KeptThreads.class.getClassLoader());

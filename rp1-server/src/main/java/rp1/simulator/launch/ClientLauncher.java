@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.ForkJoinWorkerThread;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 
@@ -55,6 +56,12 @@ final class ClientLauncher implements LoadedClient.Listener {
     }
 
     private final List<LoadedClient> clients;
+    /**
+     * The clients' threads and every thread they start (a new thread joins its starter's group), so
+     * that the threads a robot leaves behind can be found when the run ends; made when the clients are
+     * launched, let go by {@link #releaseThreads}.
+     */
+    private volatile ThreadGroup robots;
     private final ServerConfig config;
     private final ServerLog log;
     private final AtomicInteger running;
@@ -106,6 +113,62 @@ final class ClientLauncher implements LoadedClient.Listener {
     }
 
     /**
+     * The live threads the clients started from their own threads (in {@code initialize()} or
+     * {@code run()}, and the threads those started) that are running code of the class path, a
+     * robot's: not the clients' threads themselves, not the caller's, and not threads idle in the
+     * JDK's own code. Those may be the JDK's, serving every run in the process (a robot's first
+     * parallel stream starts the common fork-join pool's workers, its first delayed future the JDK's
+     * scheduler), and ending them would break the runs after; an idle pool thread of a robot's own
+     * costs only memory.
+     */
+    List<Thread> startedByClients() {
+        ThreadGroup group = robots;
+        if (group == null) {
+            return List.of();
+        }
+        Thread[] all = new Thread[group.activeCount() + 8];
+        int n = group.enumerate(all, true);
+        List<Thread> own = threads();
+        List<Thread> strays = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            Thread t = all[i];
+            if (t.isAlive() && t != Thread.currentThread() && !own.contains(t) && !(t instanceof ForkJoinWorkerThread)
+                    && runsClassPathCode(t)) {
+                strays.add(t);
+            }
+        }
+        return strays;
+    }
+
+    /**
+     * Lets the clients' thread group go once no thread is left in it. On Java 17 a group stays listed
+     * in its parent until it is destroyed, and a sweep makes one per run; a group with a thread still
+     * in it (one that would not end) stays, as does every group on a Java that no longer destroys them.
+     */
+    @SuppressWarnings("removal")
+    void releaseThreads() {
+        ThreadGroup group = robots;
+        if (group == null) {
+            return;
+        }
+        try {
+            group.destroy();
+        } catch (RuntimeException stillInUse) {
+            // See above: nothing else to do.
+        }
+    }
+
+    /** Whether a frame of {@code t}'s stack is of a class on the class path (in no named module). */
+    private static boolean runsClassPathCode(Thread t) {
+        for (StackTraceElement e : t.getStackTrace()) {
+            if (e.getModuleName() == null && !e.isNativeMethod()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
      * Connects every client to {@code simulation}, in order, then starts their threads one after the
      * other on a thread {@code helpers} gives (see the class comment), and then runs {@code whenStarted} on it:
      * once every client's {@code initialize()} has returned and the server has dealt with the requests
@@ -119,6 +182,7 @@ final class ClientLauncher implements LoadedClient.Listener {
                 Runnable whenStarted)
             throws IOException {
         outcome = whenDone;
+        robots = new ThreadGroup("robots");
         for (LoadedClient c : clients) {
             int session = LoadedRunContext.NO_SESSION;
             if (config.dlcSetIO && config.dlcDelivery != ServerConfig.Delivery.PIPES && c.whyNotDirect() == null) {
@@ -147,7 +211,7 @@ final class ClientLauncher implements LoadedClient.Listener {
         try {
             for (LoadedClient c : clients) {
                 log.log("Launching thread for client: \"" + c.className + "\"");
-                c.start(log, this);
+                c.start(log, this, robots);
                 long deadline = System.nanoTime() + (long) (config.connectTimeout * TimeUnit.SECONDS.toNanos(1));
                 if (!c.awaitReady(deadline)) {
                     log.log("client " + c.className + ": initialize() has not finished after " + config.connectTimeout

@@ -159,9 +159,12 @@ final class LoadedClient {
         finish(listener);
     }
 
-    /** Starts the client's thread: {@code initialize()}, then {@code run()} (for a direct client, only {@code initialize()}). */
-    void start(ServerLog log, Listener listener) {
-        Thread t = new Thread(() -> runClient(log, listener), "dlc " + className);
+    /**
+     * Starts the client's thread in {@code group}: {@code initialize()}, then {@code run()} (for a
+     * direct client, only {@code initialize()}). The threads the client starts from it join the group.
+     */
+    void start(ServerLog log, Listener listener, ThreadGroup group) {
+        Thread t = new Thread(group, () -> runClient(log, listener), "dlc " + className);
         t.setDaemon(true);
         thread = t;
         t.start();

@@ -381,6 +381,13 @@ public final class RunningServer {
                 parts.log.important("A loaded client's thread did not end with the run: " + t);
                 noteIfLeftRunning(t);
             }
+            // A thread a robot started (a timer, a worker) would otherwise run on through every later
+            // run of a sweep's process; it gets the same grace, then the same end.
+            for (StuckThreads.Ended t : StuckThreads.end(parts.launcher.startedByClients(), GRACE_MILLIS)) {
+                parts.log.important("A thread a loaded client started did not end with the run: " + t);
+                noteIfLeftRunning(t);
+            }
+            parts.launcher.releaseThreads();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

@@ -80,12 +80,7 @@ class KeptThreadsTest {
 
     @Test
     void aRobotStartedFromAKeptThreadSeesItsOwnRunsClasses() throws IOException {
-        Files.write(dir.resolve("home.txt"), List.of("wall w { geometry: 0, 0, 6, 0, 0.05; }",
-                "placement home { geometry: 1, 1, 0, 0.2; }"));
-        Path p = Files.write(dir.resolve("context.ini"), List.of("floorPlanFileName=" + dir.resolve("home.txt"),
-                "enableGUI=false", "enableNetworkClients=false", "interlockEnabled=true", "simulationSpeed=max",
-                "dlcEnabled=true", "dlcName=" + ContextDlc.class.getName(), "exitWhenClientsDone=true",
-                "maxSimulationTime=10"));
+        Path p = HomeSweep.properties(dir, "context", ContextDlc.class);
         InProcessSweep sweeps = new InProcessSweep();
         assertEquals(0, sweeps.run("-p", p.toString(), "--seeds", "1-6", "--jobs", "2", "--out",
                 dir.resolve("out").toString()), sweeps.out() + sweeps.err());
