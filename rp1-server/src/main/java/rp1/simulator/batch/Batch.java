@@ -87,6 +87,8 @@ public final class Batch {
     /** The engine --isolation asks for, or the one {@link #useEngine} gives. */
     private volatile RunEngine engine;
     private volatile boolean stopping;
+    /** Set when a run found the output folder without its {@code sweep.ini}: removed or replaced meanwhile. */
+    private volatile boolean outputLost;
 
     /**
      * One run of the sweep and the folder it runs in.
@@ -526,6 +528,10 @@ public final class Batch {
             pool.shutdownNow();
             progress.close();
         }
+        if (outputLost) {
+            throw new IOException(out + " lost its " + SweepSpec.FILE + " while the sweep ran (was the folder removed?): the"
+                    + " sweep stopped, and the files of the runs before may be gone; run it again into a new folder");
+        }
         List<Outcome> outcomes = new ArrayList<>();
         for (Run r : runs) {
             Outcome o = finished.get(r.dir());
@@ -554,6 +560,13 @@ public final class Batch {
      */
     private Outcome execute(Run run) throws InterruptedException {
         long start = System.nanoTime();
+        if (!Files.isRegularFile(out.resolve(SweepSpec.FILE))) {
+            // The folder was removed (or replaced) under the sweep: going on would write runs into a
+            // new folder with no record of the runs before, as if they were the whole sweep.
+            outputLost = true;
+            stop();
+            return null;
+        }
         RunEngine.Ran ran;
         try {
             folders.prepare(run);
