@@ -56,8 +56,7 @@ final class PlanCopy {
         c.y1 = w.y1;
         c.thickness = w.thickness;
         c.polygon = polygon(w.polygon);
-        c.segmentArray = w.segmentArray == null ? null
-                : w.polygon != null && w.segmentArray == w.polygon.segment ? c.polygon.segment : segments(w.segmentArray);
+        c.segmentArray = outline(w.segmentArray, w.polygon, c.polygon);
         return c;
     }
 
@@ -65,8 +64,7 @@ final class PlanCopy {
         RsPaint c = remember(p, new RsPaint(null, to));
         c.region = p.region;
         c.polygon = polygon(p.polygon);
-        c.segmentArray = p.segmentArray == null ? null
-                : p.polygon != null && p.segmentArray == p.polygon.segment ? c.polygon.segment : segments(p.segmentArray);
+        c.segmentArray = outline(p.segmentArray, p.polygon, c.polygon);
         return c;
     }
 
@@ -116,6 +114,17 @@ final class PlanCopy {
         original.copyCommonTo(copy);
         copies.put(original, copy);
         return copy;
+    }
+
+    /**
+     * The copy of a wall's or paint's {@code segments}: its polygon's copied edges when they are the
+     * polygon's own (as a parsed plan's are), so that the copy shares them as the original does.
+     */
+    private static RsSegment[] outline(RsSegment[] segments, RsPolygon polygon, RsPolygon copied) {
+        if (segments == null) {
+            return null;
+        }
+        return polygon != null && segments == polygon.segment ? copied.segment : segments(segments);
     }
 
     private static RsPolygon polygon(RsPolygon p) {

@@ -167,21 +167,13 @@ public abstract class RsBodyPart extends RsComponent {
      * adds other robots to the plan's walls).
      */
     public boolean searchForCollisions(RsWall[] walls, RsMotion motion) {
-        return walls != null && motion != null && searchForCollisions(walls, nearestFirst(walls, motion), motion);
-    }
-
-    /**
-     * As {@link #searchForCollisions(RsWall[], RsMotion)}, trying the walls in {@code order} (from
-     * {@link #nearestFirst}).
-     */
-    boolean searchForCollisions(RsWall[] walls, int[] order, RsMotion motion) {
         RsSegment[] outline = collisionOutline();
-        if (outline == null || outline.length == 0) {
+        if (walls == null || motion == null || outline == null || outline.length == 0) {
             return false;
         }
         RsSegment[] body = BodyOutline.mapInto(outline, motion.transform0, startOutline);
         startOutline = body;
-        return searchForCollisions(body, walls, order, motion);
+        return searchForCollisions(body, walls, nearestFirst(walls, motion), motion);
     }
 
     /**

@@ -139,6 +139,22 @@ final class SweptContact {
     }
 
     /**
+     * {@link #extents}' back alone: the least reach of the edges' ends along (ux, uy). A contact search
+     * asks it of every wall once it has a contact, and needs nothing across.
+     */
+    private static double leastAlong(RsSegment[] edges, int n, double ux, double uy) {
+        double back = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < n; i++) {
+            RsSegment e = edges[i];
+            double a = e.x * ux + e.y * uy;
+            double b = (e.x + e.v.x) * ux + (e.y + e.v.y) * uy;
+            back = a < back ? a : back;
+            back = b < back ? b : back;
+        }
+        return back;
+    }
+
+    /**
      * Whether the walls lie wholly beyond the point the body reaches at {@code fraction} of the
      * displacement (dx, dy): along the direction of travel, their nearest vertex is farther ahead of
      * the body's foremost vertex than that, so {@link #line} could only find a later contact. A
@@ -159,7 +175,7 @@ final class SweptContact {
         double ux = dx / length;
         double uy = dy / length;
         double front = (bodyExtents != null ? bodyExtents : extents(body, nBody, ux, uy))[FRONT];
-        double back = extents(walls, nWalls, ux, uy)[BACK];
+        double back = leastAlong(walls, nWalls, ux, uy);
         double slack = ROUNDING_SLACK * (1.0 + Math.abs(body[0].x) + Math.abs(body[0].y) + length);
         return back - front > fraction * length + slack;
     }

@@ -20,6 +20,7 @@ public final class LaunchOptions {
     final ClassLoader loader;
     /** Null: the server parses its floor plan itself. */
     final ParsedPlans plans;
+    /** Where the client starter and the stop run: {@link HelperThreads#NEW_THREADS} unless a sweep keeps threads. */
     final HelperThreads helpers;
 
     private LaunchOptions(OptionalInt port, ViewHook view, ClassLoader loader, ParsedPlans plans, HelperThreads helpers) {
