@@ -209,7 +209,8 @@ public final class Batch {
      * The engine for --isolation loader: the runs in this process, unless a class of the robot's calls
      * System.exit, which would end them all at once: then in processes of their own, as --isolation
      * process would, with the same results. The runs after one whose robot left a thread running also
-     * go to processes of their own ({@link LoaderRuns}).
+     * go to processes of their own, and so do the runs going when memory runs short and those after
+     * them ({@link LoaderRuns}).
      */
     private static RunEngine inThisProcess(Collection<String> robotClasses, ClassLoader robots, double timeoutSeconds,
                                            List<Path> classPath, ParsedPlans plans) {

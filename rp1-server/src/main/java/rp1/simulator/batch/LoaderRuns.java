@@ -1,6 +1,7 @@
 package rp1.simulator.batch;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
@@ -31,6 +32,12 @@ import rp1.simulator.launch.RunningServer;
  * this process, and every later run like it would add one. So a sweep's runs after it are carried out
  * in processes of their own, as {@code --isolation process} would, with the same results; the sweep's
  * last line says so.
+ *
+ * <p>The runs also share the process's heap. When they leave it short ({@link MemoryGuard}: a robot
+ * that keeps memory without end), the runs going are stopped and carried out again in processes of
+ * their own, and so is every run after them; a run that failed here of an {@link OutOfMemoryError}
+ * (which a run beside it may have caused) is carried out again in a process of its own. Each gets the
+ * row it would have had in a process of its own from the start, and the sweep's last line says so.
  */
 final class LoaderRuns implements RunEngine {
     private final RunClassLoader.Source classes;
@@ -41,11 +48,24 @@ final class LoaderRuns implements RunEngine {
     private final KeptThreads helpers = new KeptThreads();
     private final Set<RunningServer> running = ConcurrentHashMap.newKeySet();
     private volatile boolean stopping;
-    /** Makes the engine the runs go on with once a run left a thread running; null: none (a Spark task's one run). */
-    private final Supplier<RunEngine> afterStuck;
-    /** That engine, once made; and the line that says why. */
-    private RunEngine instead;
-    private String insteadNote;
+    /**
+     * Makes the engine for runs that cannot go on in this process (a run left a thread running, or
+     * memory ran short); null: none (a Spark task's one run), and they go on here.
+     */
+    private final Supplier<RunEngine> elsewhere;
+    /** That engine, once made. */
+    private RunEngine other;
+    /** Whether every run from now on goes to {@link #other}. */
+    private boolean allElsewhere;
+    /** The lines that say which runs went elsewhere, and why. */
+    private final List<String> elsewhereNotes = new ArrayList<>();
+    /** Looks out for the heap running short while runs go here; made with the first run. */
+    private MemoryGuard memory;
+    /** The runs going here that were stopped because memory ran short, to be carried out again elsewhere. */
+    private final Set<RunningServer> stoppedShort = ConcurrentHashMap.newKeySet();
+    /** Whether memory ran short: a run that begins here after that is stopped at once, to go elsewhere. */
+    private volatile boolean memoryShort;
+    private boolean closed;
 
     /**
      * Whether the runs share one loader, worked out when a second run starts: an engine that carries
@@ -61,15 +81,15 @@ final class LoaderRuns implements RunEngine {
 
     /**
      * @param plans      the floor plans parsed for the sweep, of which each run gets a copy
-     * @param afterStuck makes the engine for the runs after one that left a thread running (null: go
-     *                   on in this process)
+     * @param elsewhere  makes the engine for the runs that cannot go on in this process (null: they go
+     *                   on here)
      */
     LoaderRuns(List<String> robotClasses, ClassLoader parent, double timeoutSeconds, ParsedPlans plans,
-               Supplier<RunEngine> afterStuck) {
+               Supplier<RunEngine> elsewhere) {
         this.classes = RunClassLoader.source(robotClasses, parent);
         this.timeoutSeconds = timeoutSeconds;
         this.plans = plans;
-        this.afterStuck = afterStuck;
+        this.elsewhere = elsewhere;
     }
 
     /**
@@ -80,22 +100,74 @@ final class LoaderRuns implements RunEngine {
         return classes.exitCall();
     }
 
-    /** The engine the runs go on with instead of this process, or null while they stay here. */
+    /** The engine every run now goes to instead of this process, or null while they go here. */
     private synchronized RunEngine instead() {
-        return instead;
+        return allElsewhere ? other : null;
     }
 
-    /** The run left threads running: the runs after it go elsewhere, if there is an elsewhere. */
-    private synchronized void leftRunning(Batch.Run run, List<String> threads) {
-        if (instead != null || afterStuck == null) {
+    /** The engine for runs that go elsewhere, made if need be; null if there is no elsewhere (or closed). */
+    private synchronized RunEngine other() {
+        if (other == null && elsewhere != null && !closed) {
+            other = elsewhere.get();
+            if (stopping) {
+                other.stopAll();
+            }
+        }
+        return other;
+    }
+
+    /** From now on every run goes elsewhere, if there is an elsewhere; {@code why} says so on the sweep's last line. */
+    private synchronized void allElsewhere(String why) {
+        if (allElsewhere || other() == null) {
             return;
         }
-        instead = afterStuck.get();
-        insteadNote = "the runs after " + run.dir().getFileName() + " went in processes of their own: it left "
-                + threads.get(0) + " running, which could not be stopped";
-        if (stopping) {
-            instead.stopAll();
+        allElsewhere = true;
+        elsewhereNotes.add(why);
+    }
+
+    /** The run left threads running: the runs after it go elsewhere. */
+    private void leftRunning(Batch.Run run, List<String> threads) {
+        allElsewhere("the runs after " + run.dir().getFileName() + " went in processes of their own: it left "
+                + threads.get(0) + " running, which could not be stopped");
+    }
+
+    /**
+     * The heap ran short ({@link MemoryGuard}, on its thread): the runs going here stop, to be carried
+     * out again elsewhere with every run after them.
+     */
+    synchronized void memoryShort() {
+        if (allElsewhere || other() == null) {
+            return;
         }
+        memoryShort = true;
+        allElsewhere("the runs from then on went in processes of their own, those going then again: the sweep's"
+                + " process ran short of memory (a robot that keeps memory without end starves the runs beside it)");
+        for (RunningServer s : running) {
+            stoppedShort.add(s);
+            s.requestStop(ExitStatus.OK);
+        }
+    }
+
+    /**
+     * Whether a run carried out here is to be carried out again elsewhere: it was stopped because memory
+     * ran short, or it failed of running out of memory, which a run beside it may have caused (not if
+     * the sweep is being interrupted: --resume runs it again).
+     */
+    private boolean toBeRedone(RanHere here) {
+        return !stopping && (here.stoppedShort() || here.ran().report().endReason().contains(OutOfMemoryError.class.getName()))
+                && other() != null;
+    }
+
+    /** Starts the guard with the first run (none where no run can go elsewhere). */
+    private synchronized void guardMemory() {
+        if (memory == null && elsewhere != null && !closed) {
+            memory = new MemoryGuard(this::memoryShort);
+        }
+    }
+
+    /** Whether a run is going in this process. */
+    boolean anyRunning() {
+        return !running.isEmpty();
     }
 
     /** The loader this run shares with others, or null if it has one of its own. */
@@ -120,10 +192,31 @@ final class LoaderRuns implements RunEngine {
 
     @Override
     public Ran run(Batch.Run run) throws IOException, InterruptedException {
-        RunEngine elsewhere = instead();
-        if (elsewhere != null) {
-            return elsewhere.run(run);
+        RunEngine instead = instead();
+        if (instead != null) {
+            return instead.run(run);
         }
+        guardMemory();
+        RanHere here = runHere(run);
+        if (!toBeRedone(here)) {
+            return here.ran();
+        }
+        RunEngine redo;
+        synchronized (this) {
+            elsewhereNotes.add(run.dir().getFileName() + " was carried out again in a process of its own: "
+                    + (here.stoppedShort() ? "memory ran short while it went"
+                    : "it ran out of memory here, which a run beside it may have caused"));
+            redo = other();
+        }
+        RunFolder.forgetOutcome(run);
+        return redo.run(run);
+    }
+
+    /** A run carried out here, its server (null if it never had one), and whether it was stopped for memory. */
+    private record RanHere(Ran ran, RunningServer server, boolean stoppedShort) {
+    }
+
+    private RanHere runHere(Batch.Run run) throws IOException, InterruptedException {
         Thread thread = Thread.currentThread();
         ClassLoader before = thread.getContextClassLoader();
         AtomicReference<RunningServer> mine = new AtomicReference<>();
@@ -138,12 +231,17 @@ final class LoaderRuns implements RunEngine {
                 running.add(server);
                 if (stopping) {
                     server.requestStop(ExitStatus.OK);
+                } else if (memoryShort) {
+                    // Began as memory ran short, too late to be among the runs stopped.
+                    stoppedShort.add(server);
+                    server.requestStop(ExitStatus.OK);
                 }
             }, timeoutSeconds);
             if (mine.get() != null && !mine.get().threadsLeftRunning().isEmpty()) {
                 leftRunning(run, mine.get().threadsLeftRunning());
             }
-            return new Ran(report, here.trails());
+            RunningServer server = mine.get();
+            return new RanHere(new Ran(report, here.trails()), server, server != null && stoppedShort.remove(server));
         } finally {
             thread.setContextClassLoader(before);
             if (mine.get() != null) {
@@ -157,8 +255,12 @@ final class LoaderRuns implements RunEngine {
 
     @Override
     public synchronized void close() {
-        if (instead != null) {
-            instead.close();
+        closed = true;
+        if (memory != null) {
+            memory.close();
+        }
+        if (other != null) {
+            other.close();
         }
         helpers.close();
         // The shared loader's classes stay usable (a loaded class needs no open jar); only its jars
@@ -174,8 +276,12 @@ final class LoaderRuns implements RunEngine {
 
     @Override
     public synchronized String note() {
-        String shared = sharing == null ? null : sharing.note();
-        return insteadNote == null ? shared : shared == null ? insteadNote : shared + "; " + insteadNote;
+        List<String> lines = new ArrayList<>();
+        if (sharing != null) {
+            lines.add(sharing.note());
+        }
+        lines.addAll(elsewhereNotes);
+        return lines.isEmpty() ? null : String.join("; ", lines);
     }
 
     @Override
@@ -187,9 +293,12 @@ final class LoaderRuns implements RunEngine {
     public void stopAll() {
         stopping = true;
         running.forEach(s -> s.requestStop(ExitStatus.OK));
-        RunEngine elsewhere = instead();
-        if (elsewhere != null) {
-            elsewhere.stopAll();
+        RunEngine made;
+        synchronized (this) {
+            made = other;
+        }
+        if (made != null) {
+            made.stopAll();
         }
     }
 }

@@ -54,8 +54,7 @@ final class RunFolder {
     /** The run's folder with its properties (and --client command), and nothing an earlier run left. */
     void prepare(Batch.Run run) throws IOException {
         Files.createDirectories(run.dir());
-        Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
-        Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
+        forgetOutcome(run);
         Files.write(run.dir().resolve(SweepRun.PROPERTIES), properties(run).getBytes(StandardCharsets.UTF_8));
         Path command = run.dir().resolve(SweepRun.CLIENT_COMMAND);
         if (client != null) {
@@ -63,6 +62,15 @@ final class RunFolder {
         } else {
             Files.deleteIfExists(command);
         }
+    }
+
+    /**
+     * Deletes the report and trails a run left in its folder, so that a run carried out there again
+     * which ends without writing its own is not taken to have ended as the one before.
+     */
+    static void forgetOutcome(Batch.Run run) throws IOException {
+        Files.deleteIfExists(run.dir().resolve(RunReport.FILE));
+        Files.deleteIfExists(run.dir().resolve(TrailFile.FILE));
     }
 
     /** The trails a run left in its folder; none if it left none, or none that can be read (told on standard error). */

@@ -1,0 +1,102 @@
+package rp1.simulator.batch;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
+import java.lang.management.MemoryUsage;
+import java.util.List;
+
+/**
+ * Tells once when the runs sharing this process have left it short of memory: when a collection of
+ * the heap's oldest generation leaves it more than {@link #LOW} full. The heap is the process's, not
+ * a run's: a robot that keeps memory without end fills it for the runs beside it, whose allocations
+ * then fail at random points, and long before that every run crawls while the collector works on a
+ * nearly full heap for a few freed bytes at a time (a sweep of forty 30-second runs took minutes
+ * beside one such robot, its other runs 40 s each). The runs going then are better stopped and
+ * carried out where their memory is their own ({@link LoaderRuns}).
+ *
+ * <p>It looks every {@link #PERIOD_MILLIS} ms, on a thread of its own, at what the last collection
+ * left of the heap, which the collector counts anyway. The management classes that read it take 30 ms
+ * to load, which a short sweep would feel at its start, so they are loaded after
+ * {@link #LOAD_AFTER_MILLIS} ms or as soon as a quarter of the heap is in use, whichever comes first;
+ * not later: on a heap that is full, the collector stops every thread for one full collection after
+ * another with a fraction of a millisecond between them, and loading them then took the guard minutes.
+ */
+final class MemoryGuard implements AutoCloseable {
+    /** The share of the oldest generation still in use after its collection that counts as short. */
+    static final double LOW = 0.85;
+    /** The share of the whole heap in use, garbage included, from which the collections are looked at. */
+    private static final double WATCHED = 0.25;
+    /** How long after it starts the guard looks at the collections whatever the heap's use, milliseconds. */
+    private static final long LOAD_AFTER_MILLIS = 2_000;
+    private static final long PERIOD_MILLIS = 50;
+
+    private final Thread thread;
+    private volatile boolean closed;
+
+    /** Starts looking; {@code whenShort} runs once, on the guard's thread, if memory runs short before {@link #close}. */
+    MemoryGuard(Runnable whenShort) {
+        thread = new Thread(() -> watch(whenShort), "rp1-memory-guard");
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    private void watch(Runnable whenShort) {
+        Runtime runtime = Runtime.getRuntime();
+        long loadBy = System.nanoTime() + LOAD_AFTER_MILLIS * 1_000_000;
+        List<MemoryPoolMXBean> oldest = null;
+        try {
+            while (!closed) {
+                Thread.sleep(PERIOD_MILLIS);
+                if (oldest == null) {
+                    if (runtime.totalMemory() - runtime.freeMemory() < WATCHED * runtime.maxMemory()
+                            && System.nanoTime() - loadBy < 0) {
+                        continue;
+                    }
+                    oldest = oldestGeneration();
+                }
+                if (!closed && isShort(oldest, runtime.maxMemory())) {
+                    whenShort.run();
+                    return;
+                }
+            }
+        } catch (InterruptedException e) {
+            // Closed.
+        }
+    }
+
+    /**
+     * The heap's pools whose use after a collection is counted: the oldest generation's ("PS Old Gen",
+     * "Tenured Gen", "G1 Old Gen"), where what the runs keep ends up. A pool that is collected but keeps
+     * nothing for long (the young generation's) is left out by its name.
+     */
+    private static List<MemoryPoolMXBean> oldestGeneration() {
+        return ManagementFactory.getMemoryPoolMXBeans().stream()
+                .filter(p -> p.getType() == MemoryType.HEAP && p.isCollectionUsageThresholdSupported())
+                .filter(p -> p.getName().contains("Old") || p.getName().contains("Tenured"))
+                .toList();
+    }
+
+    /** Whether a pool's last collection left it more than {@link #LOW} full. */
+    static boolean isShort(List<MemoryPoolMXBean> pools, long heapMax) {
+        for (MemoryPoolMXBean p : pools) {
+            MemoryUsage after = p.getCollectionUsage();
+            if (after != null && isShort(after.getUsed(), after.getMax() > 0 ? after.getMax() : heapMax)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether {@code used} bytes of {@code max} are more than {@link #LOW} of it. */
+    static boolean isShort(long used, long max) {
+        return max > 0 && used > LOW * max;
+    }
+
+    /** Stops looking (a look under way may still end in {@code whenShort}). */
+    @Override
+    public void close() {
+        closed = true;
+        thread.interrupt();
+    }
+}
