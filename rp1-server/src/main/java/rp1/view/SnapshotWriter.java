@@ -64,9 +64,12 @@ public final class SnapshotWriter implements AutoCloseable {
         this.file = file;
         this.interval = interval;
         this.log = log;
+        // The writer is made when the first picture is taken, on the simulation's thread, whose group
+        // holds the robots' threads, which are ended with the run: it belongs with this one's.
+        ThreadGroup group = Thread.currentThread().getThreadGroup();
         this.writer = new ThreadPoolExecutor(1, 1, 0L, TimeUnit.MILLISECONDS, new ArrayBlockingQueue<>(QUEUED_PICTURES),
                 r -> {
-                    Thread t = new Thread(r, "rp1-snapshot-writer");
+                    Thread t = new Thread(group, r, "rp1-snapshot-writer");
                     t.setDaemon(true);
                     return t;
                 }, new ThreadPoolExecutor.CallerRunsPolicy());

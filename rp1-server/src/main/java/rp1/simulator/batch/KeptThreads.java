@@ -59,7 +59,7 @@ final class KeptThreads implements HelperThreads, AutoCloseable {
             threads.execute(kept);
         } catch (RejectedExecutionException e) {
             // Closed (the sweep is over): a stop asked for late still happens, on a thread of its own.
-            NEW_THREADS.start(name, daemon, task);
+            HelperThreads.in(group).start(name, daemon, task);
         }
     }
 

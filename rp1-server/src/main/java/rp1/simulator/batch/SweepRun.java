@@ -98,7 +98,7 @@ public final class SweepRun {
                 System.exit(ExitStatus.STARTUP_FAILED);
             }
         }
-        SweepRun run = new SweepRun(Paths.get(args[0]).toAbsolutePath(), robots, null, HelperThreads.NEW_THREADS);
+        SweepRun run = new SweepRun(Paths.get(args[0]).toAbsolutePath(), robots, null, HelperThreads.newThreads());
         RunReport report;
         try {
             report = run.run(started::complete, Double.POSITIVE_INFINITY);

@@ -57,11 +57,13 @@ final class ClientLauncher implements LoadedClient.Listener {
 
     private final List<LoadedClient> clients;
     /**
-     * The clients' threads and every thread they start (a new thread joins its starter's group), so
-     * that the threads a robot leaves behind can be found when the run ends; made when the clients are
-     * launched, let go by {@link #releaseThreads}.
+     * The threads that run the robots' code: the clients' own threads, the simulation's (which calls
+     * the handlers of clients connected directly), and every thread those start (a new thread joins
+     * its starter's group), so that the threads a robot leaves behind can be found when the run ends,
+     * whether it started them from {@code initialize()}, {@code run()} or a handler. Let go by
+     * {@link #releaseThreads}.
      */
-    private volatile ThreadGroup robots;
+    private final ThreadGroup robots = new ThreadGroup("robots");
     private final ServerConfig config;
     private final ServerLog log;
     private final AtomicInteger running;
@@ -101,6 +103,11 @@ final class ClientLauncher implements LoadedClient.Listener {
         return clients.isEmpty();
     }
 
+    /** The group the simulation's thread belongs in: the one of the robots' threads. */
+    ThreadGroup robotThreads() {
+        return robots;
+    }
+
     /** The clients' threads started so far (ended or not). Threads a client starts itself are not among them. */
     List<Thread> threads() {
         List<Thread> started = new ArrayList<>();
@@ -113,26 +120,23 @@ final class ClientLauncher implements LoadedClient.Listener {
     }
 
     /**
-     * The live threads the clients started from their own threads (in {@code initialize()} or
-     * {@code run()}, and the threads those started) that are running code of the class path, a
-     * robot's: not the clients' threads themselves, not the caller's, and not threads idle in the
-     * JDK's own code. Those may be the JDK's, serving every run in the process (a robot's first
+     * The live threads the clients started (in {@code initialize()}, {@code run()} or a handler, and the
+     * threads those started) that are running code of the class path, a robot's: not the clients'
+     * threads themselves, not the simulation's ({@code simulation}), not the caller's, and not threads
+     * idle in the JDK's own code. Those may be the JDK's, serving every run in the process (a robot's first
      * parallel stream starts the common fork-join pool's workers, its first delayed future the JDK's
      * scheduler), and ending them would break the runs after; an idle pool thread of a robot's own
      * costs only memory.
      */
-    List<Thread> startedByClients() {
-        ThreadGroup group = robots;
-        if (group == null) {
-            return List.of();
-        }
-        Thread[] all = new Thread[group.activeCount() + 8];
-        int n = group.enumerate(all, true);
+    List<Thread> startedByClients(Thread simulation) {
+        Thread[] all = new Thread[robots.activeCount() + 8];
+        int n = robots.enumerate(all, true);
         List<Thread> own = threads();
         List<Thread> strays = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             Thread t = all[i];
-            if (t.isAlive() && t != Thread.currentThread() && !own.contains(t) && !(t instanceof ForkJoinWorkerThread)
+            if (t.isAlive() && t != Thread.currentThread() && t != simulation && !own.contains(t)
+                    && !(t instanceof ForkJoinWorkerThread)
                     && runsClassPathCode(t)) {
                 strays.add(t);
             }
@@ -147,12 +151,8 @@ final class ClientLauncher implements LoadedClient.Listener {
      */
     @SuppressWarnings("removal")
     void releaseThreads() {
-        ThreadGroup group = robots;
-        if (group == null) {
-            return;
-        }
         try {
-            group.destroy();
+            robots.destroy();
         } catch (RuntimeException stillInUse) {
             // See above: nothing else to do.
         }
@@ -182,7 +182,6 @@ final class ClientLauncher implements LoadedClient.Listener {
                 Runnable whenStarted)
             throws IOException {
         outcome = whenDone;
-        robots = new ThreadGroup("robots");
         for (LoadedClient c : clients) {
             int session = LoadedRunContext.NO_SESSION;
             if (config.dlcSetIO && config.dlcDelivery != ServerConfig.Delivery.PIPES && c.whyNotDirect() == null) {

@@ -20,7 +20,7 @@ public final class LaunchOptions {
     final ClassLoader loader;
     /** Null: the server parses its floor plan itself. */
     final ParsedPlans plans;
-    /** Where the client starter and the stop run: {@link HelperThreads#NEW_THREADS} unless a sweep keeps threads. */
+    /** Where the client starter and the stop run: {@link HelperThreads#newThreads()} unless a sweep keeps threads. */
     final HelperThreads helpers;
 
     private LaunchOptions(OptionalInt port, ViewHook view, ClassLoader loader, ParsedPlans plans, HelperThreads helpers) {
@@ -33,7 +33,7 @@ public final class LaunchOptions {
 
     /** The properties' port and the standard view. */
     public static LaunchOptions defaults() {
-        return new LaunchOptions(OptionalInt.empty(), ViewHook.standard(), null, null, HelperThreads.NEW_THREADS);
+        return new LaunchOptions(OptionalInt.empty(), ViewHook.standard(), null, null, HelperThreads.newThreads());
     }
 
     /** Listens on {@code port} whatever the properties say; 0 picks a free port. */

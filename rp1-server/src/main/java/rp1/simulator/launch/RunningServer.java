@@ -79,7 +79,8 @@ public final class RunningServer {
 
     private RunningServer(Parts parts) {
         this.parts = parts;
-        this.scheduler = new Thread(this::simulate, "scheduler");
+        // Among the robots' threads: a handler it calls may start threads, which are ended with the run.
+        this.scheduler = new Thread(parts.launcher.robotThreads(), this::simulate, "scheduler");
         scheduler.setDaemon(true);
     }
 
@@ -383,7 +384,7 @@ public final class RunningServer {
             }
             // A thread a robot started (a timer, a worker) would otherwise run on through every later
             // run of a sweep's process; it gets the same grace, then the same end.
-            for (StuckThreads.Ended t : StuckThreads.end(parts.launcher.startedByClients(), GRACE_MILLIS)) {
+            for (StuckThreads.Ended t : StuckThreads.end(parts.launcher.startedByClients(scheduler), GRACE_MILLIS)) {
                 parts.log.important("A thread a loaded client started did not end with the run: " + t);
                 noteIfLeftRunning(t);
             }

@@ -64,6 +64,7 @@ public final class ServerLauncher {
         ServerConfig config = configure(arguments, locator);
         ServerLog log = openLog(config, workingDirectory);
         ClientListener listener = null;
+        ClientLauncher launcher = null;
         RunRecords records = RunRecords.none();
         RunningServer.Parts parts;
         try {
@@ -73,7 +74,7 @@ public final class ServerLauncher {
             long seed = config.randomSeed.orElse(System.nanoTime());
             Simulation simulation = simulate(config, planText, options.plans, seed, log);
             records = keepRecords(config, workingDirectory, simulation, planText, seed, log);
-            ClientLauncher launcher = ClientLauncher.create(config, log, loader);
+            launcher = ClientLauncher.create(config, log, loader);
             ClientRegistry registry = new ClientRegistry(log);
             int port = options.port.orElse(arguments.port.orElse(config.port));
             listener = listen(config, port, simulation, planText, registry, log);
@@ -82,6 +83,9 @@ public final class ServerLauncher {
         } catch (StartupException | RuntimeException e) {
             if (listener != null) {
                 listener.close();
+            }
+            if (launcher != null) {
+                launcher.releaseThreads();
             }
             records.close();
             String message = e instanceof StartupException ? e.getMessage() : LoadedClient.describe(e);

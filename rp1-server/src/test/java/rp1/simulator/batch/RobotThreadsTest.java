@@ -13,9 +13,9 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * A thread a robot starts and leaves running is ended with its run in a sweep's process, and the
- * run's log says where it was, so that it does not run on through every later run; the run's group
- * of robots' threads goes with it.
+ * A thread a robot starts and leaves running (from {@code initialize()} or from a handler) is ended
+ * with its run in a sweep's process, and the run's log says where it was, so that it does not run on
+ * through every later run; the run's group of robots' threads goes with it.
  */
 @Timeout(120)
 class RobotThreadsTest {
@@ -41,5 +41,23 @@ class RobotThreadsTest {
         }
         // Each run's group of robots' threads is let go with the run: a sweep of thousands keeps none.
         assertTrue(here.activeGroupCount() <= groupsBefore, here.activeGroupCount() + " groups, " + groupsBefore + " before");
+    }
+
+    @Test
+    void aThreadAHandlerStartedAndLeftRunningIsEndedWithItsRunToo() throws Exception {
+        // The handler runs on the simulation's thread, which is among the robots' threads for this reason.
+        Path p = HomeSweep.properties(dir, "leaky", LeakyHandlerDlc.class);
+        InProcessSweep sweeps = new InProcessSweep();
+        assertEquals(0, sweeps.run("-p", p.toString(), "--seeds", "1-2", "--jobs", "1", "--out",
+                dir.resolve("out").toString()), sweeps.out() + sweeps.err());
+        for (String run : List.of("1-home", "2-home")) {
+            String log = Files.readString(dir.resolve("out/runs").resolve(run).resolve("server.log"));
+            assertTrue(log.contains("A thread a loaded client started did not end with the run: thread \"leaky handler's"
+                    + " helper\" in " + LeakyHandlerDlc.class.getName() + ".spin"), log);
+            assertFalse(log.contains("thread \"scheduler\""), "the simulation's own thread is not taken for a robot's: " + log);
+        }
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            assertFalse(t.getName().equals("leaky handler's helper") && t.isAlive(), "a robot's thread still runs: " + t);
+        }
     }
 }
