@@ -21,7 +21,8 @@ public class LeakyDlc extends RsClient {
         sendPlacementRequest("home");
     }
 
-    private static void spin() {
+    /** Sleeps 5 ms at a time for ever, interrupted or not. */
+    static void spin() {
         while (true) {
             try {
                 Thread.sleep(5);

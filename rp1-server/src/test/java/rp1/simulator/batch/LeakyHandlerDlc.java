@@ -15,21 +15,11 @@ public class LeakyHandlerDlc extends RsClient {
         super.initialize();
         sendBodySpecification(Disc.named("leaky", 0.1));
         addPlacementEventHandler(e -> {
-            Thread helper = new Thread(LeakyHandlerDlc::spin, "leaky handler's helper");
+            Thread helper = new Thread(LeakyDlc::spin, "leaky handler's helper");
             helper.setDaemon(true);
             helper.start();
             shutdown();
         });
         sendPlacementRequest("home");
-    }
-
-    private static void spin() {
-        while (true) {
-            try {
-                Thread.sleep(5);
-            } catch (InterruptedException e) {
-                // Deaf to interrupts, as a careless loop is.
-            }
-        }
     }
 }

@@ -24,21 +24,9 @@ class RobotThreadsTest {
 
     @Test
     void aThreadTheRobotLeftRunningIsEndedWithItsRunAndLogged() throws Exception {
-        Path p = HomeSweep.properties(dir, "leaky", LeakyDlc.class);
         ThreadGroup here = Thread.currentThread().getThreadGroup();
         int groupsBefore = here.activeGroupCount();
-        InProcessSweep sweeps = new InProcessSweep();
-        assertEquals(0, sweeps.run("-p", p.toString(), "--seeds", "1-2", "--jobs", "1", "--out",
-                dir.resolve("out").toString()), sweeps.out() + sweeps.err());
-        for (String run : List.of("1-home", "2-home")) {
-            String log = Files.readString(dir.resolve("out/runs").resolve(run).resolve("server.log"));
-            assertTrue(log.contains("A thread a loaded client started did not end with the run: thread \"leaky helper\" in "
-                    + LeakyDlc.class.getName() + ".spin"), log);
-            assertTrue(log.contains("stopped"), log);
-        }
-        for (Thread t : Thread.getAllStackTraces().keySet()) {
-            assertFalse(t.getName().equals("leaky helper") && t.isAlive(), "a robot's thread still runs: " + t);
-        }
+        sweepLeaving(LeakyDlc.class, "leaky helper");
         // Each run's group of robots' threads is let go with the run: a sweep of thousands keeps none.
         assertTrue(here.activeGroupCount() <= groupsBefore, here.activeGroupCount() + " groups, " + groupsBefore + " before");
     }
@@ -46,18 +34,27 @@ class RobotThreadsTest {
     @Test
     void aThreadAHandlerStartedAndLeftRunningIsEndedWithItsRunToo() throws Exception {
         // The handler runs on the simulation's thread, which is among the robots' threads for this reason.
-        Path p = HomeSweep.properties(dir, "leaky", LeakyHandlerDlc.class);
+        sweepLeaving(LeakyHandlerDlc.class, "leaky handler's helper");
+    }
+
+    /**
+     * Sweeps two runs of {@code robot}, which leaves a thread named {@code thread} running LeakyDlc.spin:
+     * each run's log says it was ended, and it is.
+     */
+    private void sweepLeaving(Class<?> robot, String thread) throws Exception {
+        Path p = HomeSweep.properties(dir, "leaky", robot);
         InProcessSweep sweeps = new InProcessSweep();
         assertEquals(0, sweeps.run("-p", p.toString(), "--seeds", "1-2", "--jobs", "1", "--out",
                 dir.resolve("out").toString()), sweeps.out() + sweeps.err());
         for (String run : List.of("1-home", "2-home")) {
             String log = Files.readString(dir.resolve("out/runs").resolve(run).resolve("server.log"));
-            assertTrue(log.contains("A thread a loaded client started did not end with the run: thread \"leaky handler's"
-                    + " helper\" in " + LeakyHandlerDlc.class.getName() + ".spin"), log);
+            assertTrue(log.contains("A thread a loaded client started did not end with the run: thread \"" + thread + "\" in "
+                    + LeakyDlc.class.getName() + ".spin"), log);
+            assertTrue(log.contains("stopped"), log);
             assertFalse(log.contains("thread \"scheduler\""), "the simulation's own thread is not taken for a robot's: " + log);
         }
         for (Thread t : Thread.getAllStackTraces().keySet()) {
-            assertFalse(t.getName().equals("leaky handler's helper") && t.isAlive(), "a robot's thread still runs: " + t);
+            assertFalse(t.getName().equals(thread) && t.isAlive(), "a robot's thread still runs: " + t);
         }
     }
 }
