@@ -374,10 +374,11 @@ public final class Batch {
             throw new SweepException("--resume: " + e.getMessage());
         }
         List<Outcome> kept = new ArrayList<>();
+        ResultsCsv.Kept last = rows.isEmpty() ? null : rows.get(rows.size() - 1);
         for (Run run : runs) {
             for (ResultsCsv.Kept k : rows) {
                 if (k.seed() == run.seed() && k.plan().equals(run.plan()) && k.configuration().equals(run.configuration())) {
-                    if (k.report().carriedOut()) {
+                    if (k.report().carriedOut() && (k != last || allRobots(k, run))) {
                         kept.add(new Outcome(run, k.report(), k.wallSeconds(), RunFolder.trails(run)));
                     }
                     break;
@@ -385,6 +386,22 @@ public final class Batch {
             }
         }
         return kept;
+    }
+
+    /**
+     * Whether the rows of the run results.csv had last are of all its robots, as its folder's report
+     * counts them (if it has one): a sweep killed while writing a run's rows can cut them between two
+     * robots' rows, which leaves whole rows. Otherwise the run is run again.
+     */
+    private static boolean allRobots(ResultsCsv.Kept k, Run run) {
+        if (!Files.isRegularFile(run.dir().resolve(RunReport.FILE))) {
+            return true; // a run that never wrote its report (killed at its timeout): its row is all there is
+        }
+        try {
+            return RunReport.read(run.dir()).robots().size() == k.report().robots().size();
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     private static List<String> variedKeys(SweepOptions options) {

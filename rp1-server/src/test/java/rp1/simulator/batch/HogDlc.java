@@ -22,10 +22,15 @@ public class HogDlc extends RsClient {
     @Override
     public void initialize() throws IOException {
         super.initialize();
-        sendBodySpecification(Disc.named("hog", 0.1));
+        sendBodySpecification(Disc.named(placement(), 0.1));
         addTimeoutEventHandler(e -> beat());
-        sendPlacementRequest("home");
+        sendPlacementRequest(placement());
         sendTimeoutRequest(0.1);
+    }
+
+    /** Where the robot is placed, which is also its name. */
+    String placement() {
+        return "home";
     }
 
     private void beat() {
