@@ -67,14 +67,18 @@ final class MemoryGuard implements AutoCloseable {
 
     /**
      * The heap's pools whose use after a collection is counted: the oldest generation's ("PS Old Gen",
-     * "Tenured Gen", "G1 Old Gen"), where what the runs keep ends up. A pool that is collected but keeps
-     * nothing for long (the young generation's) is left out by its name.
+     * "Tenured Gen", "G1 Old Gen"), where what the runs keep ends up; a pool that is collected but keeps
+     * nothing for long (the young generation's) is left out by its name. A collector with one
+     * generation (ZGC, Shenandoah) has its one pool counted.
      */
     private static List<MemoryPoolMXBean> oldestGeneration() {
-        return ManagementFactory.getMemoryPoolMXBeans().stream()
+        List<MemoryPoolMXBean> collected = ManagementFactory.getMemoryPoolMXBeans().stream()
                 .filter(p -> p.getType() == MemoryType.HEAP && p.isCollectionUsageThresholdSupported())
+                .toList();
+        List<MemoryPoolMXBean> oldest = collected.stream()
                 .filter(p -> p.getName().contains("Old") || p.getName().contains("Tenured"))
                 .toList();
+        return oldest.isEmpty() ? collected : oldest;
     }
 
     /** Whether a pool's last collection left it more than {@link #LOW} full. */
