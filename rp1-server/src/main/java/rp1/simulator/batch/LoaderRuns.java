@@ -161,7 +161,7 @@ final class LoaderRuns implements RunEngine {
     /** Starts the guard with the first run (none where no run can go elsewhere). */
     private synchronized void guardMemory() {
         if (memory == null && elsewhere != null && !closed) {
-            memory = new MemoryGuard(this::memoryShort);
+            memory = MemoryGuard.watching(this, LoaderRuns::memoryShort);
         }
     }
 

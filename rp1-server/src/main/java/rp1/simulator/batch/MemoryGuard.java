@@ -4,7 +4,10 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryPoolMXBean;
 import java.lang.management.MemoryType;
 import java.lang.management.MemoryUsage;
+import java.lang.ref.WeakReference;
 import java.util.List;
+import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
 
 /**
  * Tells once when the runs sharing this process have left it short of memory: when a collection of
@@ -34,19 +37,34 @@ final class MemoryGuard implements AutoCloseable {
     private final Thread thread;
     private volatile boolean closed;
 
-    /** Starts looking; {@code whenShort} runs once, on the guard's thread, if memory runs short before {@link #close}. */
-    MemoryGuard(Runnable whenShort) {
-        thread = new Thread(() -> watch(whenShort), "rp1-memory-guard");
+    /**
+     * Starts looking on behalf of {@code owner}: {@code whenShort} is given it once, on the guard's
+     * thread, if memory runs short before {@link #close}. The guard holds its owner weakly and stops
+     * once the owner is gone, so that a guard whose owner was never closed (a sweep that failed) does
+     * not look on for ever.
+     */
+    static <T> MemoryGuard watching(T owner, Consumer<? super T> whenShort) {
+        WeakReference<T> held = new WeakReference<>(owner);
+        return new MemoryGuard(() -> {
+            T o = held.get();
+            if (o != null) {
+                whenShort.accept(o);
+            }
+        }, () -> held.get() == null);
+    }
+
+    private MemoryGuard(Runnable whenShort, BooleanSupplier ownerGone) {
+        thread = new Thread(() -> watch(whenShort, ownerGone), "rp1-memory-guard");
         thread.setDaemon(true);
         thread.start();
     }
 
-    private void watch(Runnable whenShort) {
+    private void watch(Runnable whenShort, BooleanSupplier ownerGone) {
         Runtime runtime = Runtime.getRuntime();
         long loadBy = System.nanoTime() + LOAD_AFTER_MILLIS * 1_000_000;
         List<MemoryPoolMXBean> oldest = null;
         try {
-            while (!closed) {
+            while (!closed && !ownerGone.getAsBoolean()) {
                 Thread.sleep(PERIOD_MILLIS);
                 if (oldest == null) {
                     if (runtime.totalMemory() - runtime.freeMemory() < WATCHED * runtime.maxMemory()
@@ -95,6 +113,11 @@ final class MemoryGuard implements AutoCloseable {
     /** Whether {@code used} bytes of {@code max} are more than {@link #LOW} of it. */
     static boolean isShort(long used, long max) {
         return max > 0 && used > LOW * max;
+    }
+
+    /** Whether the guard still looks (it has not been closed, nor seen its owner go, nor told of memory running short). */
+    boolean isLooking() {
+        return thread.isAlive();
     }
 
     /** Stops looking (a look under way may still end in {@code whenShort}). */

@@ -101,6 +101,22 @@ class MemoryShortTest {
     }
 
     @Test
+    void aGuardWhoseOwnerIsGoneStopsLooking() throws Exception {
+        // As a sweep that failed leaves its engine unclosed: the guard must not look on for ever.
+        MemoryGuard guard = MemoryGuard.watching(new Object(), owner -> { });
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        while (guard.isLooking() && System.nanoTime() < deadline) {
+            System.gc();
+            Thread.sleep(60);
+        }
+        assertFalse(guard.isLooking());
+        MemoryGuard kept = MemoryGuard.watching(dir, owner -> { });
+        Thread.sleep(200);
+        assertTrue(kept.isLooking(), "an owner still held keeps it looking");
+        kept.close();
+    }
+
+    @Test
     void theOldestGenerationIsShortWhenACollectionLeavesItMoreThanFullToTheMark() {
         assertFalse(MemoryGuard.isShort(84, 100));
         assertFalse(MemoryGuard.isShort(85, 100));
