@@ -39,13 +39,15 @@ public final class RunningServer {
 
     /** The stop reason of a max-speed run that every client and robot has left ({@link #endWhenDeserted}). */
     public static final String NOBODY_LEFT = "nobody-left";
+    /** The stop reason while the server runs. */
+    private static final String RUNNING = "running";
 
     private final Parts parts;
     private final Thread scheduler;
     private final AtomicBoolean stopping = new AtomicBoolean();
     private final CountDownLatch exited = new CountDownLatch(1);
     private volatile int exitStatus = ExitStatus.OK;
-    private volatile String stopReason = "running";
+    private volatile String stopReason = RUNNING;
     private volatile AutoCloseable view = () -> { };
     /** What {@link #threadsLeftRunning} returns. */
     private final List<String> leftRunning = new CopyOnWriteArrayList<>();
@@ -95,8 +97,12 @@ public final class RunningServer {
         try {
             parts.simulation.runPaused();
         } catch (Error e) {
-            parts.log.important("The simulation failed and stops: " + e);
-            requestStop(ExitStatus.FATAL_ERROR, "the simulation failed: " + e);
+            try {
+                parts.log.important("The simulation failed and stops: " + e);
+            } finally {
+                // Even if the log line could not be made (out of memory still).
+                requestStop(ExitStatus.FATAL_ERROR, "the simulation failed: " + e);
+            }
             throw e;
         }
     }
@@ -244,7 +250,15 @@ public final class RunningServer {
             return;
         }
         stopReason = reason;
-        parts.helpers.start("shutdown", false, () -> shutDown(status));
+        try {
+            parts.helpers.start("shutdown", false, () -> shutDown(status));
+        } catch (RuntimeException | Error e) {
+            // No thread for the stop (out of memory, out of threads): the next request tries again,
+            // instead of finding the server stopping and waiting for a stop that never began.
+            stopReason = RUNNING;
+            stopping.set(false);
+            throw e;
+        }
     }
 
     /**
