@@ -182,7 +182,9 @@ class InstalledCommandTest {
                 simulation.output().contains(JavaCommand.HUGE_PAGES), "huge pages as the kernel gives them: " + simulation.output());
         Result sweep = runWith("-XX:+PrintCommandLineFlags", rp1, "sweep", "-h");
         assertEquals(0, sweep.status(), sweep.output());
-        JavaCommand.SWEEP_OPTIONS.forEach(o -> assertTrue(sweep.output().contains(o), o + " in " + sweep.output()));
+        // -XX:+PrintCommandLineFlags prints the young generation's size in bytes, as the two flags it sets.
+        JavaCommand.SWEEP_OPTIONS.forEach(o -> assertTrue(sweep.output().contains(
+                o.equals(JavaCommand.YOUNG_GENERATION) ? "-XX:NewSize=67108864" : o), o + " in " + sweep.output()));
         assertFalse(sweep.output().contains(JavaCommand.HUGE_PAGES), sweep.output());
         int processors = Integer.parseInt(run("getconf", "_NPROCESSORS_ONLN").output().trim());
         assertEquals(processors <= JavaCommand.FEW_PROCESSORS, sweep.output().contains(JavaCommand.ONE_COMPILER_THREAD),
@@ -191,6 +193,10 @@ class InstalledCommandTest {
         assertEquals(1, theirs.status(), "the simulator started and found no such file: " + theirs.output());
         assertTrue(theirs.output().contains("-XX:+UseParallelGC"), theirs.output());
         assertFalse(theirs.output().contains("-XX:+UseSerialGC"), theirs.output());
+        Result smallHeap = runWith("-Xmx48m -XX:+PrintCommandLineFlags", rp1, "sweep", "-h");
+        assertEquals(0, smallHeap.status(), smallHeap.output());
+        assertFalse(smallHeap.output().contains("-XX:NewSize=67108864") || smallHeap.output().contains("warning"),
+                "a heap the user sizes has no young generation of ours, larger than it: " + smallHeap.output());
         Result bothCompilers = runWith("-XX:TieredStopAtLevel=4 -XX:+PrintCommandLineFlags", rp1, "sweep", "-h");
         assertEquals(0, bothCompilers.status(), "one compiler thread would keep both compilers from starting: "
                 + bothCompilers.output());
