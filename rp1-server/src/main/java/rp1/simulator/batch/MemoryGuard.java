@@ -23,7 +23,7 @@ import java.util.function.Consumer;
  * to load, which a short sweep would feel at its start, so they are loaded after
  * {@link #LOAD_AFTER_MILLIS} ms or as soon as a quarter of the heap is in use, whichever comes first;
  * not later: on a heap that is full, the collector stops every thread for one full collection after
- * another with a fraction of a millisecond between them, and loading them then took the guard minutes.
+ * another with a fraction of a millisecond between them, and loading them then took the guard 20 s.
  */
 final class MemoryGuard implements AutoCloseable {
     /** The share of the oldest generation still in use after its collection that counts as short. */
