@@ -389,16 +389,18 @@ public final class Batch {
     }
 
     /**
-     * Whether the rows of the run results.csv had last are of all its robots, as its folder's report
-     * counts them (if it has one): a sweep killed while writing a run's rows can cut them between two
-     * robots' rows, which leaves whole rows. Otherwise the run is run again.
+     * Whether the rows of the run results.csv had last are of all its named robots, as its folder's
+     * report counts them (if it has one). A run's rows are appended in one write, so a sweep killed
+     * while writing (or a machine that went off) can cut only the last run's: in a row, which is left
+     * out, or between two robots' rows. Otherwise the run is run again.
      */
     private static boolean allRobots(ResultsCsv.Kept k, Run run) {
         if (!Files.isRegularFile(run.dir().resolve(RunReport.FILE))) {
-            return true; // a run that never wrote its report (killed at its timeout): its row is all there is
+            return true; // a run that wrote no report (killed at its timeout) has no robots: one row, whole or left out
         }
         try {
-            return RunReport.read(run.dir()).robots().size() == k.report().robots().size();
+            return RunReport.read(run.dir()).robots().stream().filter(r -> !r.name().isEmpty()).count()
+                    == k.report().robots().size();
         } catch (IOException e) {
             return false;
         }

@@ -60,7 +60,7 @@ final class LoaderRuns implements RunEngine {
     /** The lines that say which runs went elsewhere, and why. */
     private final List<String> elsewhereNotes = new ArrayList<>();
     /** Looks out for the heap running short while runs go here; made with the first run. */
-    private MemoryGuard memory;
+    private MemoryGuard<LoaderRuns> memory;
     /** The runs going here that were stopped because memory ran short, to be carried out again elsewhere. */
     private final Set<RunningServer> stoppedShort = ConcurrentHashMap.newKeySet();
     /** Whether memory ran short: a run that begins here after that is stopped at once, to go elsewhere. */
@@ -161,7 +161,7 @@ final class LoaderRuns implements RunEngine {
     /** Starts the guard with the first run (none where no run can go elsewhere). */
     private synchronized void guardMemory() {
         if (memory == null && elsewhere != null && !closed) {
-            memory = MemoryGuard.watching(this, LoaderRuns::memoryShort);
+            memory = new MemoryGuard<>(this, LoaderRuns::memoryShort);
         }
     }
 
@@ -212,8 +212,8 @@ final class LoaderRuns implements RunEngine {
         return redo.run(run);
     }
 
-    /** A run carried out here, its server (null if it never had one), and whether it was stopped for memory. */
-    private record RanHere(Ran ran, RunningServer server, boolean stoppedShort) {
+    /** A run carried out here, and whether it was stopped because memory ran short. */
+    private record RanHere(Ran ran, boolean stoppedShort) {
     }
 
     private RanHere runHere(Batch.Run run) throws IOException, InterruptedException {
@@ -241,7 +241,7 @@ final class LoaderRuns implements RunEngine {
                 leftRunning(run, mine.get().threadsLeftRunning());
             }
             RunningServer server = mine.get();
-            return new RanHere(new Ran(report, here.trails()), server, server != null && stoppedShort.remove(server));
+            return new RanHere(new Ran(report, here.trails()), server != null && stoppedShort.remove(server));
         } finally {
             thread.setContextClassLoader(before);
             if (mine.get() != null) {

@@ -6,7 +6,6 @@ import java.lang.management.MemoryType;
 import java.lang.management.MemoryUsage;
 import java.lang.ref.WeakReference;
 import java.util.List;
-import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 
 /**
@@ -25,7 +24,7 @@ import java.util.function.Consumer;
  * not later: on a heap that is full, the collector stops every thread for one full collection after
  * another with a fraction of a millisecond between them, and loading them then took the guard 20 s.
  */
-final class MemoryGuard implements AutoCloseable {
+final class MemoryGuard<T> implements AutoCloseable {
     /** The share of the oldest generation still in use after its collection that counts as short. */
     static final double LOW = 0.85;
     /** The share of the whole heap in use, garbage included, from which the collections are looked at. */
@@ -34,37 +33,33 @@ final class MemoryGuard implements AutoCloseable {
     private static final long LOAD_AFTER_MILLIS = 2_000;
     private static final long PERIOD_MILLIS = 50;
 
+    /**
+     * Held weakly: the guard stops once its owner is gone, so that a guard whose owner was never
+     * closed (a sweep that failed) does not look on for ever.
+     */
+    private final WeakReference<T> owner;
+    private final Consumer<? super T> whenShort;
     private final Thread thread;
     private volatile boolean closed;
 
     /**
      * Starts looking on behalf of {@code owner}: {@code whenShort} is given it once, on the guard's
-     * thread, if memory runs short before {@link #close}. The guard holds its owner weakly and stops
-     * once the owner is gone, so that a guard whose owner was never closed (a sweep that failed) does
-     * not look on for ever.
+     * thread, if memory runs short before {@link #close}.
      */
-    static <T> MemoryGuard watching(T owner, Consumer<? super T> whenShort) {
-        WeakReference<T> held = new WeakReference<>(owner);
-        return new MemoryGuard(() -> {
-            T o = held.get();
-            if (o != null) {
-                whenShort.accept(o);
-            }
-        }, () -> held.get() == null);
-    }
-
-    private MemoryGuard(Runnable whenShort, BooleanSupplier ownerGone) {
-        thread = new Thread(() -> watch(whenShort, ownerGone), "rp1-memory-guard");
+    MemoryGuard(T owner, Consumer<? super T> whenShort) {
+        this.owner = new WeakReference<>(owner);
+        this.whenShort = whenShort;
+        thread = new Thread(this::watch, "rp1-memory-guard");
         thread.setDaemon(true);
         thread.start();
     }
 
-    private void watch(Runnable whenShort, BooleanSupplier ownerGone) {
+    private void watch() {
         Runtime runtime = Runtime.getRuntime();
         long loadBy = System.nanoTime() + LOAD_AFTER_MILLIS * 1_000_000;
         List<MemoryPoolMXBean> oldest = null;
         try {
-            while (!closed && !ownerGone.getAsBoolean()) {
+            while (!closed && owner.get() != null) {
                 Thread.sleep(PERIOD_MILLIS);
                 if (oldest == null) {
                     if (runtime.totalMemory() - runtime.freeMemory() < WATCHED * runtime.maxMemory()
@@ -73,8 +68,7 @@ final class MemoryGuard implements AutoCloseable {
                     }
                     oldest = oldestGeneration();
                 }
-                if (!closed && isShort(oldest, runtime.maxMemory())) {
-                    whenShort.run();
+                if (!closed && isShort(oldest, runtime.maxMemory()) && told()) {
                     return;
                 }
             }
@@ -97,6 +91,18 @@ final class MemoryGuard implements AutoCloseable {
                 .filter(p -> p.getName().contains("Old") || p.getName().contains("Tenured"))
                 .toList();
         return oldest.isEmpty() ? collected : oldest;
+    }
+
+    /**
+     * Tells the owner that memory ran short, if it is still there; whether it was. (A method of its
+     * own, so that the guard's loop holds no strong reference to the owner while it sleeps.)
+     */
+    private boolean told() {
+        T o = owner.get();
+        if (o != null) {
+            whenShort.accept(o);
+        }
+        return o != null;
     }
 
     /** Whether a pool's last collection left it more than {@link #LOW} full. */

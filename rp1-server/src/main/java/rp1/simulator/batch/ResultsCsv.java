@@ -181,11 +181,9 @@ public final class ResultsCsv implements AutoCloseable {
     }
 
     /**
-     * The runs {@code file} holds rows of, in the order of the file; none if there is no file. A run's
-     * rows are appended in one write, so a sweep killed while writing (or a machine that went off)
-     * leaves at most the last run's rows cut short: a file that does not end with a whole row has its
-     * last run left out, the rows it kept of it too (a run of several robots has a row each, and the
-     * rows before the cut are whole), and that run is run again.
+     * The runs {@code file} holds rows of, in the order of the file; none if there is no file. A last
+     * row cut off while being written (the sweep was killed) is left out; the whole rows before it may
+     * be the same run's first robots, which {@code --resume} checks against the run's folder.
      *
      * @param varied the varied keys the file must have columns for
      * @throws IOException naming the file and line if it is not a sweep's results
@@ -231,11 +229,6 @@ public final class ResultsCsv implements AutoCloseable {
             } catch (IllegalArgumentException e) {
                 throw new IOException(file + ": row " + (i + 1) + " is not a sweep's result: " + e.getMessage(), e);
             }
-        }
-        if (!text.isEmpty() && !text.endsWith("\n") && !kept.isEmpty()) {
-            // Cut while a run's rows were written: the partial row is not among the rows, and the whole
-            // rows before it may be that run's first robots.
-            kept.remove(kept.size() - 1);
         }
         return kept;
     }

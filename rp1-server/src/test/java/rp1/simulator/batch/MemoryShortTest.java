@@ -103,14 +103,14 @@ class MemoryShortTest {
     @Test
     void aGuardWhoseOwnerIsGoneStopsLooking() throws Exception {
         // As a sweep that failed leaves its engine unclosed: the guard must not look on for ever.
-        MemoryGuard guard = MemoryGuard.watching(new Object(), owner -> { });
+        MemoryGuard<Object> guard = new MemoryGuard<>(new Object(), owner -> { });
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
         while (guard.isLooking() && System.nanoTime() < deadline) {
             System.gc();
             Thread.sleep(60);
         }
         assertFalse(guard.isLooking());
-        MemoryGuard kept = MemoryGuard.watching(dir, owner -> { });
+        MemoryGuard<Path> kept = new MemoryGuard<>(dir, owner -> { });
         Thread.sleep(200);
         assertTrue(kept.isLooking(), "an owner still held keeps it looking");
         kept.close();
