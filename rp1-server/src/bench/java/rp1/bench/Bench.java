@@ -1,6 +1,7 @@
 package rp1.bench;
 
 import java.io.IOException;
+import java.nio.file.Paths;
 import java.time.LocalDate;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -17,7 +18,9 @@ import rp1.simulator.launch.StartupException;
  * {@code latency}, {@code connect}, {@code cold}, {@code pacing}, {@code throughput}, {@code longrun},
  * {@code network}, {@code scale} (the peers' "scale arena" workload, {@link ScaleArena});
  * {@code robots=1,100,1000} chooses the robot counts of the throughput and scale runs, {@code xmx=512m}
- * their heap. Figures only; nothing is asserted.
+ * their heap. Not in {@code all}: {@code peers[=DIR] [rounds=N]}, the scale arena side by side with the
+ * peer simulators built beside the project ({@link SideBySide}; robots 1, 10, 100 and 1,000 unless
+ * {@code robots=} says). Figures only; nothing is asserted.
  */
 public final class Bench {
     private static final double MEASURE_SECONDS = 3.0;
@@ -29,17 +32,27 @@ public final class Bench {
     public static void main(String[] args) throws Exception {
         List<String> what = new ArrayList<>();
         List<Integer> robots = List.of(1, 10, 100, 1000, 10000);
+        List<Integer> peerRobots = List.of(1, 10, 100, 1000);
         String xmx = "512m";
+        int rounds = 3;
+        String peers = null;
+        boolean sideBySide = false;
         for (String a : args) {
             if (a.startsWith("robots=")) {
                 robots = parseCounts(a.substring("robots=".length()));
+                peerRobots = robots;
+            } else if (a.startsWith("rounds=")) {
+                rounds = Integer.parseInt(a.substring("rounds=".length()));
+            } else if (a.equals("peers") || a.startsWith("peers=")) {
+                sideBySide = true;
+                peers = a.startsWith("peers=") ? a.substring("peers=".length()) : null;
             } else if (a.startsWith("xmx=")) {
                 xmx = a.substring("xmx=".length());
             } else {
                 what.add(a);
             }
         }
-        boolean all = what.isEmpty() || what.contains("all");
+        boolean all = (what.isEmpty() && !sideBySide) || what.contains("all");
         System.out.printf(Locale.ROOT, "RP1 server benchmark, %s, %d processors, Java %s%n",
                 LocalDate.now(), Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"));
         if (all || what.contains("latency")) {
@@ -71,6 +84,10 @@ public final class Bench {
                     System.out.println(n + " robots in the scale arena: the run failed with status " + status);
                 }
             }
+        }
+        if (sideBySide) {
+            SideBySide.run(SideBySide.peersFolder(peers, System.getenv(SideBySide.PEERS_VARIABLE), Paths.get("")),
+                    peerRobots, rounds, xmx);
         }
         if (all || what.contains("longrun")) {
             Child.run(xmx, LongRun.class, System.out::println, "100000");
