@@ -148,6 +148,14 @@ public final class Sweep {
             out.println(usage);
             return 0;
         }
+        // What the sweep uses of the JDK for the first time is loaded on a second processor while this
+        // one prepares the sweep: the digest of sweep.ini is wanted within 50 ms, the picture at the end.
+        Thread warmUp = new Thread(() -> {
+            Batch.warmUp();
+            SweepPicture.warmUp();
+        }, "rp1-warm-up");
+        warmUp.setDaemon(true);
+        warmUp.start();
         try {
             Batch batch = Batch.prepare(options, Paths.get("").toAbsolutePath(), Sweep.class.getClassLoader());
             if (engines != null) {
@@ -160,9 +168,6 @@ public final class Sweep {
                     + batch.plans().size() + " plan" + (batch.plans().size() == 1 ? "" : "s") + "), " + options.jobs
                     + " at a time, into " + batch.out()
                     + (options.resume ? "; " + batch.kept().size() + " finished before, " + toRun + " to run" : ""));
-            Thread warmUp = new Thread(SweepPicture::warmUp, "rp1-picture-warm-up");
-            warmUp.setDaemon(true);
-            warmUp.start();
             Batch.Result result = batch.run(new Progress(toRun, out, terminal));
             List<Batch.Outcome> outcomes = result.outcomes();
             Path summary = batch.out().resolve("summary.png");

@@ -67,7 +67,9 @@ public final class SweepPicture {
      * Draws a small picture with what {@link #draw} uses (antialiased strokes, shapes, text) and encodes
      * it as PNG, for nothing: the first use of Java 2D and of the PNG encoder in a JVM loads and
      * compiles a great deal (fonts, the rasterizer, the encoder). A sweep calls this on a thread of its
-     * own while its runs compute, so that its summary picture at the end does not wait for that.
+     * own from its start, while it is prepared and its first runs compute, so that its summary picture
+     * at the end does not wait for that (and the plan parser finds {@code java.awt.Color}, whose first
+     * use loads the AWT library, loaded).
      */
     public static void warmUp() {
         BufferedImage image = new BufferedImage(96, 48, BufferedImage.TYPE_INT_RGB);

@@ -127,6 +127,15 @@ public final class Batch {
     }
 
     /**
+     * Loads what {@link #prepare} uses of the JDK for the first time in a JVM and not on its own
+     * account (the security providers behind sweep.ini's digest: 10 ms of class loading), for a caller
+     * to do on another thread while it parses its options, rather than on the way to the first run.
+     */
+    public static void warmUp() {
+        SweepSpec.warmUp();
+    }
+
+    /**
      * Checks everything that can be checked before a run starts: the properties of every
      * configuration (valid, loading a client or given one with {@code --client}, bounding every run),
      * the plans (found and parsed), the output folder, and with {@code --resume} that the folder holds
