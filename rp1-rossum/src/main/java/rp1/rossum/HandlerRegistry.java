@@ -1,10 +1,7 @@
 package rp1.rossum;
 
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Collections;
 import java.util.HashMap;
-import java.util.List;
 import java.util.Map;
 
 import rp1.rossum.event.RsEvent;
@@ -13,31 +10,40 @@ import rp1.rossum.wire.EventKey;
 
 /**
  * The client's event handlers, keyed by (event code, index) where the index is the sensor id for
- * sensor events and 0 otherwise. Handlers for a key are kept in registration order, as a list that is
- * never changed but replaced: dispatch takes the list as it is (a snapshot that costs nothing, once per
- * event), so a handler may add or remove handlers while an event is being delivered. The keys every
- * client uses (the protocol's event codes, sensor ids below {@link #SMALL_INDEXES}) are looked up in
- * arrays: a crowd's clients dispatch hundreds of thousands of events a second, and a hashed key costs a
- * box and several dependent loads each.
+ * sensor events and 0 otherwise. Handlers for a key are kept in registration order, as an array that
+ * is never changed but replaced: dispatch takes the array as it is (a snapshot that costs nothing,
+ * once per event), so a handler may add or remove handlers while an event is being delivered. The
+ * keys every client uses (the protocol's event codes, sensor ids below {@link #SMALL_INDEXES}) are
+ * looked up in arrays: a crowd's clients dispatch hundreds of thousands of events a second, and a
+ * hashed key costs a box and several dependent loads each.
+ *
+ * <p>Handlers are added and removed under the registry's lock, and each change publishes new tables
+ * through a volatile field, so that a dispatch, on whichever thread, reads them without a lock: with
+ * a thousand robots in one world a lock taken per event was a compare-and-swap on a thousand objects
+ * in turn, and a list's iterator two allocations per event.
  */
 final class HandlerRegistry {
     /** Indexes below this, for codes of {@link RsEvent}, are kept in arrays; the rest in a map. */
     private static final int SMALL_INDEXES = 64;
-    /** By code, by index: the handlers, or null where none were ever registered. */
-    private final Object[][] small = new Object[RsEvent.EVT_ARRAY_SIZE][];
-    private final Map<Long, List<RsEventHandler>> others = new HashMap<>();
+    private static final RsEventHandler[] NONE = new RsEventHandler[0];
+    /**
+     * By code, by index: the handlers, or null where none were ever registered. Never changed once
+     * published: a change copies the code's row into a new table.
+     */
+    private volatile RsEventHandler[][][] small = new RsEventHandler[RsEvent.EVT_ARRAY_SIZE][][];
+    /** The other keys' handlers; never changed once published, likewise. */
+    private volatile Map<Long, RsEventHandler[]> others = Map.of();
 
     /** Whether any handler is registered for the key. */
-    synchronized boolean has(int code, int index) {
-        List<RsEventHandler> list = get(code, index);
-        return list != null && !list.isEmpty();
+    boolean has(int code, int index) {
+        return snapshot(code, index).length > 0;
     }
 
     synchronized void add(int code, int index, RsEventHandler handler) {
-        List<RsEventHandler> list = get(code, index);
-        List<RsEventHandler> grown = new ArrayList<>(list == null ? List.of() : list);
-        grown.add(handler);
-        put(code, index, Collections.unmodifiableList(grown));
+        RsEventHandler[] list = get(code, index);
+        RsEventHandler[] grown = list == null ? new RsEventHandler[1] : Arrays.copyOf(list, list.length + 1);
+        grown[grown.length - 1] = handler;
+        put(code, index, grown);
     }
 
     /**
@@ -46,11 +52,9 @@ final class HandlerRegistry {
      * it subscribes again (protocol.md section 10).
      */
     synchronized void remove(int code, int index, RsEventHandler handler) {
-        List<RsEventHandler> list = get(code, index);
+        RsEventHandler[] list = get(code, index);
         if (list != null) {
-            List<RsEventHandler> kept = new ArrayList<>(list);
-            kept.removeIf(handler::equals);
-            put(code, index, Collections.unmodifiableList(kept));
+            put(code, index, Arrays.stream(list).filter(h -> !handler.equals(h)).toArray(RsEventHandler[]::new));
         }
     }
 
@@ -59,43 +63,51 @@ final class HandlerRegistry {
         put(code, index, null);
     }
 
-    /** The handlers for the key, in registration order, as a snapshot (an unmodifiable list). */
-    synchronized List<RsEventHandler> snapshot(int code, int index) {
-        List<RsEventHandler> list = get(code, index);
-        return list == null ? List.of() : list;
+    /**
+     * The handlers for the key, in registration order, as a snapshot: an array that later
+     * registrations leave as it is, and that the caller must not change.
+     */
+    RsEventHandler[] snapshot(int code, int index) {
+        RsEventHandler[] list = get(code, index);
+        return list == null ? NONE : list;
     }
 
     private static boolean isSmall(int code, int index) {
         return code >= 0 && code < RsEvent.EVT_ARRAY_SIZE && index >= 0 && index < SMALL_INDEXES;
     }
 
-    @SuppressWarnings("unchecked")
-    private List<RsEventHandler> get(int code, int index) {
+    private RsEventHandler[] get(int code, int index) {
         if (!isSmall(code, index)) {
             return others.get(EventKey.of(code, index));
         }
-        Object[] byIndex = small[code];
-        return byIndex == null || index >= byIndex.length ? null : (List<RsEventHandler>) byIndex[index];
+        RsEventHandler[][] byIndex = small[code];
+        return byIndex == null || index >= byIndex.length ? null : byIndex[index];
     }
 
-    /** Sets the key's handlers; null removes the key. */
-    private void put(int code, int index, List<RsEventHandler> list) {
+    /** Publishes the key's handlers; null removes the key. Only under the lock. */
+    private void put(int code, int index, RsEventHandler[] list) {
         if (!isSmall(code, index)) {
+            Map<Long, RsEventHandler[]> changed = new HashMap<>(others);
             if (list == null) {
-                others.remove(EventKey.of(code, index));
+                changed.remove(EventKey.of(code, index));
             } else {
-                others.put(EventKey.of(code, index), list);
+                changed.put(EventKey.of(code, index), list);
             }
+            others = changed;
             return;
         }
-        Object[] byIndex = small[code];
+        RsEventHandler[][] byIndex = small[code];
         if (byIndex == null || index >= byIndex.length) {
             if (list == null) {
                 return;
             }
-            byIndex = byIndex == null ? new Object[index + 1] : Arrays.copyOf(byIndex, index + 1);
-            small[code] = byIndex;
+            byIndex = byIndex == null ? new RsEventHandler[index + 1][] : Arrays.copyOf(byIndex, index + 1);
+        } else {
+            byIndex = byIndex.clone();
         }
         byIndex[index] = list;
+        RsEventHandler[][][] table = small.clone();
+        table[code] = byIndex;
+        small = table;
     }
 }

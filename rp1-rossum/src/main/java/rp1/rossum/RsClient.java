@@ -1311,8 +1311,7 @@ public class RsClient extends RsProtocol implements RsRunnable, RsLogInterface {
 
     /** Calls the event's handlers in registration order until one consumes it. */
     private void dispatch(RsEvent e) {
-        List<RsEventHandler> handlers = registry.snapshot(e.eventID, e.getIndex());
-        for (RsEventHandler h : handlers) {
+        for (RsEventHandler h : registry.snapshot(e.eventID, e.getIndex())) {
             if (e.isConsumed()) {
                 return;
             }

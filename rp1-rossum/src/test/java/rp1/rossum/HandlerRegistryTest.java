@@ -28,14 +28,14 @@ class HandlerRegistryTest {
     void handlersAreKeptInRegistrationOrderForEveryKindOfKey() {
         for (int[] k : KEYS) {
             assertFalse(registry.has(k[0], k[1]));
-            assertEquals(List.of(), registry.snapshot(k[0], k[1]));
+            assertEquals(List.of(), handlers(k[0], k[1]));
             registry.add(k[0], k[1], first);
             registry.add(k[0], k[1], second);
             assertTrue(registry.has(k[0], k[1]));
-            assertEquals(List.of(first, second), registry.snapshot(k[0], k[1]));
+            assertEquals(List.of(first, second), handlers(k[0], k[1]));
         }
-        assertEquals(List.of(), registry.snapshot(RsEvent.EVT_RANGE_SENSOR, 4), "a neighbouring id has none");
-        assertEquals(List.of(), registry.snapshot(RsEvent.EVT_TARGET_SENSOR, 3), "nor another code at the same id");
+        assertEquals(List.of(), handlers(RsEvent.EVT_RANGE_SENSOR, 4), "a neighbouring id has none");
+        assertEquals(List.of(), handlers(RsEvent.EVT_TARGET_SENSOR, 3), "nor another code at the same id");
     }
 
     @Test
@@ -45,22 +45,27 @@ class HandlerRegistryTest {
             registry.add(k[0], k[1], second);
             registry.add(k[0], k[1], first);
             registry.remove(k[0], k[1], first);
-            assertEquals(List.of(second), registry.snapshot(k[0], k[1]));
+            assertEquals(List.of(second), handlers(k[0], k[1]));
             registry.remove(k[0], k[1], second);
             assertFalse(registry.has(k[0], k[1]));
             registry.add(k[0], k[1], second);
             registry.removeAll(k[0], k[1]);
             assertFalse(registry.has(k[0], k[1]));
-            assertEquals(List.of(), registry.snapshot(k[0], k[1]));
+            assertEquals(List.of(), handlers(k[0], k[1]));
         }
     }
 
     @Test
     void aSnapshotIsNotChangedByLaterRegistrations() {
         registry.add(RsEvent.EVT_HEARTBEAT, 0, first);
-        List<RsEventHandler> before = registry.snapshot(RsEvent.EVT_HEARTBEAT, 0);
+        RsEventHandler[] before = registry.snapshot(RsEvent.EVT_HEARTBEAT, 0);
         registry.add(RsEvent.EVT_HEARTBEAT, 0, second);
+        registry.remove(RsEvent.EVT_HEARTBEAT, 0, first);
         registry.removeAll(RsEvent.EVT_HEARTBEAT, 0);
-        assertEquals(List.of(first), before);
+        assertEquals(List.of(first), List.of(before));
+    }
+
+    private List<RsEventHandler> handlers(int code, int index) {
+        return List.of(registry.snapshot(code, index));
     }
 }
