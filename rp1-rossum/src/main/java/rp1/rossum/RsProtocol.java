@@ -129,7 +129,13 @@ public class RsProtocol implements RsLogInterface {
      */
     private final Object stateLock = new Object();
     private boolean loggerSet;
-    private boolean closed;
+    /**
+     * Changed under {@link #stateLock}, read without it: every event sent and every request asks, and
+     * a directly connected client's event loop waits on that lock ({@link #awaitClosed}), which makes
+     * the JVM inflate its monitor: each ask was then a heavyweight lock, hundreds of thousands a second
+     * in a crowd.
+     */
+    private volatile boolean closed;
     private RsProtocolShutdownHandler shutdownHandler;
     /** Run by {@link #shutdown()} before the handler: closes the other end of a direct link. */
     private volatile Runnable closingAction = () -> { };
@@ -411,9 +417,7 @@ public class RsProtocol implements RsLogInterface {
 
     /** Whether this session has been shut down. */
     boolean isClosed() {
-        synchronized (stateLock) {
-            return closed;
-        }
+        return closed;
     }
 
     /**
