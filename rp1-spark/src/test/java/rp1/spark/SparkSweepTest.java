@@ -97,14 +97,19 @@ class SparkSweepTest {
                 "1-" + RUNS, out), print, print, false, new Interruption()));
         Path results = out.resolve("results.csv");
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-        while ((!Files.exists(results) || Files.readAllLines(results).size() < 5) && System.nanoTime() < end) {
+        while ((!Files.exists(results) || Files.readAllLines(results).size() < 5) && !sweep.isDone()
+                && System.nanoTime() < end) {
             Thread.sleep(50);
         }
-        assertTrue(Files.readAllLines(results).size() < RUNS, "the worker is killed while runs are left");
+        // A sweep that ended (or never wrote a row) before the worker could be killed says why, with the
+        // cluster's logs, rather than failing on a missing file.
+        assertTrue(!sweep.isDone() && Files.exists(results) && Files.readAllLines(results).size() < RUNS,
+                () -> "the worker is to be killed while runs are left, but the sweep "
+                        + (sweep.isDone() ? "ended with status " + sweep.join() : "wrote " + results + " too late")
+                        + ":\n" + text.toString(StandardCharsets.UTF_8) + clusterLogs());
         cluster.killWorker(1);
         int status = sweep.get(240, TimeUnit.SECONDS);
-        assertEquals(0, status, () -> text.toString(StandardCharsets.UTF_8) + "\nThe master's log:\n" + log("master.log")
-                + "\nThe other worker's log:\n" + log("worker-2.log"));
+        assertEquals(0, status, () -> text.toString(StandardCharsets.UTF_8) + clusterLogs());
         assertEquals(local, rows(out));
     }
 
@@ -157,6 +162,12 @@ class SparkSweepTest {
             a.addAll(List.of("--jobs", "2"));
         }
         return a.toArray(new String[0]);
+    }
+
+    /** The cluster's logs, for a failure's message. */
+    private String clusterLogs() {
+        return "\nThe master's log:\n" + log("master.log") + "\nThe first worker's log:\n" + log("worker-1.log")
+                + "\nThe other worker's log:\n" + log("worker-2.log");
     }
 
     /** The last lines of a log of the cluster's, for a failure's message. */
