@@ -65,6 +65,39 @@ class HandlerRegistryTest {
         assertEquals(List.of(first), List.of(before));
     }
 
+    @Test
+    void aDispatchOnAnotherThreadSeesEachKeysHandlersWholeAndInOrderWhileTheyAreAdded() throws Exception {
+        // Handlers are added on a robot's own thread while the simulation's thread dispatches: every
+        // snapshot read there must be one the registry published, never a half-made one.
+        int count = 2_000;
+        RsEventHandler[] added = new RsEventHandler[count];
+        for (int i = 0; i < count; i++) {
+            added[i] = (RsHeartbeatEventHandler) e -> { };
+        }
+        Thread adder = new Thread(() -> {
+            for (RsEventHandler h : added) {
+                registry.add(RsEvent.EVT_RANGE_SENSOR, 5, h);
+                registry.add(RsEvent.EVT_RANGE_SENSOR, 500, h);
+            }
+        });
+        adder.start();
+        int seen = 0;
+        while (seen < count) {
+            for (int index : new int[] {5, 500}) {
+                RsEventHandler[] now = registry.snapshot(RsEvent.EVT_RANGE_SENSOR, index);
+                for (int i = 0; i < now.length; i++) {
+                    assertTrue(now[i] == added[i], "handler " + i + " of " + now.length + " at index " + index);
+                }
+                if (index == 500) {
+                    assertTrue(now.length >= seen, "a later snapshot lost handlers");
+                    seen = now.length;
+                }
+            }
+        }
+        adder.join();
+        assertEquals(count, registry.snapshot(RsEvent.EVT_RANGE_SENSOR, 5).length);
+    }
+
     private List<RsEventHandler> handlers(int code, int index) {
         return List.of(registry.snapshot(code, index));
     }
