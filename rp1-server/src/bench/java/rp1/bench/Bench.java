@@ -1,7 +1,6 @@
 package rp1.bench;
 
 import java.io.IOException;
-import java.nio.file.Paths;
 import java.time.LocalDate;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -19,8 +18,8 @@ import rp1.simulator.launch.StartupException;
  * {@code network}, {@code scale} (the peers' "scale arena" workload, {@link ScaleArena});
  * {@code robots=1,100,1000} chooses the robot counts of the throughput and scale runs, {@code xmx=512m}
  * their heap. Not in {@code all}: {@code peers[=DIR] [rounds=N]}, the scale arena side by side with the
- * peer simulators built beside the project ({@link SideBySide}; robots 1, 10, 100 and 1,000 unless
- * {@code robots=} says). Figures only; nothing is asserted.
+ * peer simulators whose scripts are in DIR or {@code $RP1_PEERS} ({@link SideBySide}; robots 1, 10, 100
+ * and 1,000 unless {@code robots=} says). Figures only; nothing is asserted.
  */
 public final class Bench {
     private static final double MEASURE_SECONDS = 3.0;
@@ -86,8 +85,7 @@ public final class Bench {
             }
         }
         if (sideBySide) {
-            SideBySide.run(SideBySide.peersFolder(peers, System.getenv(SideBySide.PEERS_VARIABLE), Paths.get("")),
-                    peerRobots, rounds, xmx);
+            SideBySide.run(SideBySide.peersFolder(peers, System.getenv(SideBySide.PEERS_VARIABLE)), peerRobots, rounds, xmx);
         }
         if (all || what.contains("longrun")) {
             Child.run(xmx, LongRun.class, System.out::println, "100000");

@@ -23,7 +23,12 @@ final class Child {
             throws IOException, InterruptedException {
         List<String> options = new ArrayList<>(JavaCommand.simulatorOptions());
         options.addAll(List.of("-Xmx" + xmx, "-Xss4m"));
-        Process p = new ProcessBuilder(JavaCommand.of(options, main.getName(), args)).redirectErrorStream(true).start();
+        return run(JavaCommand.of(options, main.getName(), args), lines);
+    }
+
+    /** Runs {@code command}, its errors merged into its output; each output line goes to {@code lines}; returns the exit status. */
+    static int run(List<String> command, Consumer<String> lines) throws IOException, InterruptedException {
+        Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
         try (BufferedReader in = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
             String line;
             while ((line = in.readLine()) != null) {

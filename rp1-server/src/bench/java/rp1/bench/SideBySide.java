@@ -1,9 +1,6 @@
 package rp1.bench;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStreamReader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
@@ -24,17 +21,14 @@ import java.util.regex.Pattern;
  * same simulated span, alternating which goes first, and prints both figures and their ratio; at the
  * end, per robot count, the medians and every round's ratio, as a table to quote.
  *
- * <p>The peers are not part of the project: DIR holds their scripts ({@code ../shared/peers} beside
- * the repository, or {@code $RP1_PEERS}), and their own {@code setup.sh} builds them. Without them this
- * part says so and measures nothing. ir-sim ({@code irsim_bench.sh}) runs too for counts up to 100,
+ * <p>The peers are not part of the project: DIR (or {@code $RP1_PEERS}) is the folder of their scripts,
+ * whose own {@code setup.sh} builds them. Without it this part says so and measures nothing. ir-sim ({@code irsim_bench.sh}) runs too for counts up to 100,
  * as the peers' own table has it: it is the slow one (6.3 simulated s per wall s at 100 robots here,
  * 48 s for one round's 300 simulated seconds).
  */
 final class SideBySide {
     /** The environment variable naming the peers' folder when the argument does not. */
     static final String PEERS_VARIABLE = "RP1_PEERS";
-    /** The peers' folder beside the repository, as this project's machines have it. */
-    private static final String PEERS_BESIDE = "../shared/peers";
     /** ir-sim runs up to this many robots, as the peers' own table has it. */
     private static final int IRSIM_MOST = 100;
     private static final Pattern RP1_FIGURE = Pattern.compile("([0-9][0-9,]*\\.[0-9]+) simulated s per wall s");
@@ -52,20 +46,23 @@ final class SideBySide {
     }
 
     /**
-     * The peers' folder: {@code given} if not null, else {@code $RP1_PEERS}, else the folder beside the
-     * repository; null if there is none with Stage's script.
+     * The peers' folder: {@code given} if not null, else {@code variable} ({@code $RP1_PEERS}) if set;
+     * null if that is not a folder with Stage's script.
      */
-    static Path peersFolder(String given, String variable, Path root) {
-        Path p = given != null ? Paths.get(given) : variable != null && !variable.isEmpty() ? Paths.get(variable)
-                : root.resolve(PEERS_BESIDE);
+    static Path peersFolder(String given, String variable) {
+        String named = given != null ? given : variable;
+        if (named == null || named.isEmpty()) {
+            return null;
+        }
+        Path p = Paths.get(named);
         return Files.isRegularFile(p.resolve("stage_bench.sh")) ? p.toAbsolutePath().normalize() : null;
     }
 
     /** Runs {@code rounds} rounds over {@code robots}, the peers' scripts from {@code folder}. */
     static void run(Path folder, List<Integer> robots, int rounds, String xmx) throws IOException, InterruptedException {
         if (folder == null) {
-            System.out.println("peers: no peers' folder (peers=DIR, $" + PEERS_VARIABLE + " or " + PEERS_BESIDE
-                    + " with stage_bench.sh); nothing measured. The peers are built by their own setup.sh.");
+            System.out.println("peers: no peers' folder with stage_bench.sh (give it as peers=DIR or $" + PEERS_VARIABLE
+                    + "); nothing measured. The peers are built by their own setup.sh.");
             return;
         }
         List<Peer> peers = List.of(new Peer("Stage 4.3.0 (loop-only)", folder.resolve("stage_bench.sh"), Integer.MAX_VALUE),
@@ -162,11 +159,7 @@ final class SideBySide {
         List<String> lines = new ArrayList<>();
         int status = Child.run(xmx, ScaleArena.class, lines::add, String.valueOf(n),
                 String.valueOf(ScaleArena.simulatedFor(n)), String.valueOf(ScaleArena.arenaFor(n)));
-        OptionalDouble f = status == 0 ? parse(lines, RP1_FIGURE) : OptionalDouble.empty();
-        if (f.isEmpty()) {
-            System.out.println("RP1, " + n + " robots: no figure (status " + status + "): " + String.join(" / ", lines));
-        }
-        return f.orElse(Double.NaN);
+        return figure("RP1", n, status, lines, RP1_FIGURE);
     }
 
     /** The peer's loop-only figure for {@code n} robots over the same simulated span as RP1's. */
@@ -174,21 +167,17 @@ final class SideBySide {
         if (!Files.isRegularFile(p.script())) {
             return Double.NaN;
         }
-        String seconds = String.valueOf((long) ScaleArena.simulatedFor(n));
-        Process process = new ProcessBuilder("bash", p.script().toString(), String.valueOf(n), seconds)
-                .redirectErrorStream(true).start();
         List<String> lines = new ArrayList<>();
-        try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
-            String line;
-            while ((line = in.readLine()) != null) {
-                lines.add(line);
-            }
-        }
-        int status = process.waitFor();
-        OptionalDouble f = status == 0 ? parse(lines, PEER_FIGURE) : OptionalDouble.empty();
+        int status = Child.run(List.of("bash", p.script().toString(), String.valueOf(n),
+                String.valueOf((long) ScaleArena.simulatedFor(n))), lines::add);
+        return figure(p.name() + " (is it built? its setup.sh builds it)", n, status, lines, PEER_FIGURE);
+    }
+
+    /** The figure a run printed, or NaN, saying why, if it failed or printed none. */
+    private static double figure(String who, int n, int status, List<String> lines, Pattern pattern) {
+        OptionalDouble f = status == 0 ? parse(lines, pattern) : OptionalDouble.empty();
         if (f.isEmpty()) {
-            System.out.println(p.name() + ", " + n + " robots: no figure (status " + status + "; is it built? its setup.sh"
-                    + " builds it): " + String.join(" / ", lines));
+            System.out.println(who + ", " + n + " robots: no figure (status " + status + "): " + String.join(" / ", lines));
         }
         return f.orElse(Double.NaN);
     }

@@ -53,13 +53,11 @@ class SideBySideTest {
 
     @Test
     void findsThePeersOnlyWhereStagesScriptIs(@TempDir Path dir) throws Exception {
-        assertNull(SideBySide.peersFolder(dir.toString(), null, dir));
+        assertNull(SideBySide.peersFolder(dir.toString(), null));
         Files.writeString(dir.resolve("stage_bench.sh"), "#!/bin/sh\n");
-        assertEquals(dir.toAbsolutePath().normalize(), SideBySide.peersFolder(null, dir.toString(), Path.of("elsewhere")));
-        assertEquals(dir.toAbsolutePath().normalize(), SideBySide.peersFolder(dir.toString(), "/nowhere", Path.of("x")));
-        Path root = Files.createDirectories(dir.resolve("repo"));
-        Path beside = Files.createDirectories(dir.resolve("shared/peers"));
-        Files.writeString(beside.resolve("stage_bench.sh"), "#!/bin/sh\n");
-        assertEquals(beside.toAbsolutePath().normalize(), SideBySide.peersFolder(null, "", root));
+        assertEquals(dir.toAbsolutePath().normalize(), SideBySide.peersFolder(null, dir.toString()));
+        assertEquals(dir.toAbsolutePath().normalize(), SideBySide.peersFolder(dir.toString(), "/nowhere"));
+        assertNull(SideBySide.peersFolder(null, ""), "no folder named: none looked for");
+        assertNull(SideBySide.peersFolder(null, null), "no folder named: none looked for");
     }
 }
