@@ -5,9 +5,9 @@ import rp1.rossum.RsTransform;
 /**
  * A robot's interactive shapes placed at one pose, as plain coordinate arrays with a bounding box per
  * polygon: what the robot-against-robot tests work on, many times per step in a crowd. Polygons are
- * closed implicitly (the last vertex joins the first). Touching counts as overlapping. A robot keeps
- * one and places it anew at each pose it is asked for ({@link #place}), so that a sample allocates
- * nothing.
+ * closed implicitly (the last vertex joins the first). Touching counts as overlapping. One is placed
+ * anew at each pose asked for ({@link #place}), so that a sample allocates nothing; the contact search
+ * keeps them ({@link PlacedOutlines}).
  */
 final class Outlines {
     /** What this places: each polygon's x0, y0, x1, y1, ... in body coordinates. */
@@ -49,6 +49,11 @@ final class Outlines {
     /** {@code outlines} (each x0, y0, x1, y1, ... in body coordinates) placed at {@code pose}. */
     static Outlines at(double[][] outlines, RsTransform pose) {
         return new Outlines(outlines).place(pose);
+    }
+
+    /** What this places: each polygon's x0, y0, x1, y1, ... in body coordinates. */
+    double[][] source() {
+        return source;
     }
 
     /** Places these outlines anew at {@code pose}. Returns this, which no longer answers for the pose it had. */

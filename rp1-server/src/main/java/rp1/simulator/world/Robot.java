@@ -55,12 +55,13 @@ public final class Robot {
     private boolean moving;
     private boolean placementEvaluation;
 
-    Robot(int number, RsBody body, EventSink events, RobotNoise noise) {
+    /** @param sources the world's outlines, shared by the robots of one design */
+    Robot(int number, RsBody body, EventSink events, RobotNoise noise, OutlineSources sources) {
         this.number = number;
         this.noise = noise;
         this.body = body;
         this.events = events;
-        this.shapes = new RobotShapes(body);
+        this.shapes = new RobotShapes(body, sources);
         this.sight = new Sight(body);
         String name = body.getName();
         this.label = name == null || name.isEmpty() ? "robot " + number : name;

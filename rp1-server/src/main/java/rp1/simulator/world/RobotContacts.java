@@ -57,6 +57,8 @@ final class RobotContacts {
     /** By robot number: the motion task's run in which the robot last searched for contacts (-1: never). */
     private long[] searchedIn = new long[0];
     private final Touches touches = new Touches();
+    /** The outlines of the pair being searched, and of contact sensors, placed. */
+    private final PlacedOutlines placed = new PlacedOutlines();
 
     RobotContacts(Surroundings surroundings) {
         this.surroundings = surroundings;
@@ -180,7 +182,7 @@ final class RobotContacts {
      * of their reach while that is wide, else the exact distance of their outlines. Within it, only
      * whether they touch: 0 if they do, else {@code SAMPLE_SPACING}.
      */
-    private static double gap(Robot a, Robot b, double t) {
+    private double gap(Robot a, Robot b, double t) {
         RsTransform pa = a.motion().getPoseAtTime(t);
         RsTransform pb = b.motion().getPoseAtTime(t);
         double circles = circlesGap(a, pa, b, pb);
@@ -189,8 +191,8 @@ final class RobotContacts {
         }
         // Within the sampling spacing only whether they touch matters, and the search for a vertex near
         // an edge can end at the first; beyond it the search needs the exact distance to jump by.
-        Outlines outlinesA = a.shapes().outlinesAt(pa);
-        Outlines outlinesB = b.shapes().outlinesAt(pb);
+        Outlines outlinesA = placed.of(a, pa);
+        Outlines outlinesB = placed.of(b, pb);
         double near = outlinesA.within(outlinesB, SAMPLE_SPACING);
         return near <= SAMPLE_SPACING ? near : outlinesA.distance(outlinesB);
     }
@@ -249,7 +251,7 @@ final class RobotContacts {
         return Double.compare(stopTime(r, clear, now), stopTime(r, touching, now)) == 0;
     }
 
-    private static boolean touch(Robot a, Robot b, double t) {
+    private boolean touch(Robot a, Robot b, double t) {
         RsTransform pa = a.motion().getPoseAtTime(t);
         RsTransform pb = b.motion().getPoseAtTime(t);
         // Circles that keep apart settle it without building either outline (most samples of a pair
@@ -257,11 +259,8 @@ final class RobotContacts {
         if (circlesGap(a, pa, b, pb) > CIRCLES_SLACK * (1.0 + Math.abs(pa.m13) + Math.abs(pa.m23))) {
             return false;
         }
-        return a.shapes().outlinesAt(pa).overlaps(b.shapes().outlinesAt(pb));
-    }
-
-    private static Outlines outlinesAt(Robot r, double t) {
-        return r.shapes().outlinesAt(r.motion().getPoseAtTime(t));
+        Outlines outlinesA = placed.of(a, pa);
+        return outlinesA.overlaps(placed.of(b, pb));
     }
 
     /**
@@ -318,17 +317,17 @@ final class RobotContacts {
      * requested), or null if one of them is within {@code margin} of touching and not touching by more
      * than that (with a margin of 0, never null).
      */
-    private static List<RsBodyContactSensor> touching(Robot r, Robot other, double contact, double margin) {
+    private List<RsBodyContactSensor> touching(Robot r, Robot other, double contact, double margin) {
         RobotShapes.ContactSensors sensors = r.shapes().contactSensors();
         if (sensors.count() == 0) {
             return List.of();
         }
         List<RsBodyContactSensor> touching = new ArrayList<>();
-        Outlines otherShapes = outlinesAt(other, contact);
+        Outlines otherShapes = placed.of(other, other.motion().getPoseAtTime(contact));
         RsTransform pose = r.motion().getPoseAtTime(contact);
         for (int i = 0; i < sensors.count(); i++) {
             // Bit for bit the distance up to the limit, so a margin of 0 is the plain test.
-            double d = sensors.outlinesAt(i, pose).distance(otherShapes, TOUCHING + margin);
+            double d = placed.sensor(sensors.outline(i), pose).distance(otherShapes, TOUCHING + margin);
             if (d <= TOUCHING - margin) {
                 touching.add(sensors.sensor(i));
             } else if (d <= TOUCHING + margin) {

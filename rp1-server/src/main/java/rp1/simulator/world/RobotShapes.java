@@ -12,8 +12,8 @@ import rp1.rossum.RsWall;
 /**
  * A robot's interactive shapes (the parts that collide) in body coordinates, with what the world needs
  * from them: their outlines at a pose as wall polygons (so other robots' sensors see this robot and
- * placements keep clear of it), as {@link Outlines} for the robot-against-robot tests, and how far from
- * the body origin they reach.
+ * placements keep clear of it), their outlines to place for the robot-against-robot tests
+ * ({@link PlacedOutlines}), and how far from the body origin they reach.
  */
 final class RobotShapes {
     private final double[][] outlines;
@@ -21,24 +21,22 @@ final class RobotShapes {
     /** The last pose {@link #asWalls} was asked for, and its answer. */
     private final LastPose wallsPose = new LastPose();
     private RsWall[] walls;
-    /** The last pose {@link #outlinesAt} was asked for (the identity at first), and its answer. */
-    private final LastPose outlinesPose = new LastPose();
-    private final Outlines placed;
     private final ContactSensors contactSensors;
 
-    RobotShapes(RsBody body) {
-        contactSensors = new ContactSensors(body);
+    /** The body's shapes, their outlines shared through {@code sources} with every robot of the same design. */
+    RobotShapes(RsBody body, OutlineSources sources) {
+        contactSensors = new ContactSensors(body, sources);
         RsBodyShape[] shapes = body.getInteractiveBodyShapeArray();
-        outlines = new double[shapes.length][];
+        double[][] own = new double[shapes.length][];
         double r = 0.0;
         for (int i = 0; i < shapes.length; i++) {
-            outlines[i] = shapes[i].getOutlineVertices();
-            for (int k = 0; k + 1 < outlines[i].length; k += 2) {
-                r = Math.max(r, Math.hypot(outlines[i][k], outlines[i][k + 1]));
+            own[i] = shapes[i].getOutlineVertices();
+            for (int k = 0; k + 1 < own[i].length; k += 2) {
+                r = Math.max(r, Math.hypot(own[i][k], own[i][k + 1]));
             }
         }
+        outlines = sources.intern(own);
         reach = r;
-        placed = Outlines.at(outlines, new RsTransform());
     }
 
     /** The largest distance of any outline vertex from the body origin, metres. */
@@ -77,16 +75,11 @@ final class RobotShapes {
     }
 
     /**
-     * The shapes placed at {@code pose}. The contact search asks for a robot's outlines at every sample
-     * of every pair it is in, and a robot at rest is always at the same pose, so the answer for the last
-     * pose is kept. It is one object, placed anew for another pose: valid until the next call.
+     * The shapes' outlines (each x0, y0, x1, y1, ... in body coordinates), to place with {@link Outlines}:
+     * shared with the robots of the same design, and only read.
      */
-    Outlines outlinesAt(RsTransform pose) {
-        if (!outlinesPose.is(pose)) {
-            placed.place(pose);
-            outlinesPose.set(pose);
-        }
-        return placed;
+    double[][] outlines() {
+        return outlines;
     }
 
     /** The body's contact sensors, in the body's order, with their outlines ready to place. */
@@ -95,16 +88,17 @@ final class RobotShapes {
     }
 
     /**
-     * A body's contact sensors and an outline of each to place at a pose: which of them touch another
+     * A body's contact sensors and the outline of each, to place at a pose: which of them touch another
      * robot is asked at every contact between robots.
      */
     static final class ContactSensors {
         private final RsBodyContactSensor[] sensors;
-        private final Outlines[] placed;
+        /** Each sensor's outline as outlines of one polygon, shared like the shapes' outlines. */
+        private final double[][][] outlines;
         /** The largest distance of any sensor outline's vertex from the body origin, metres. */
         private final double reach;
 
-        private ContactSensors(RsBody body) {
+        private ContactSensors(RsBody body, OutlineSources sources) {
             int n = 0;
             RsBodySensor[] all = body.getBodySensorArray();
             RsBodyContactSensor[] found = new RsBodyContactSensor[all.length];
@@ -114,11 +108,11 @@ final class RobotShapes {
                 }
             }
             sensors = Arrays.copyOf(found, n);
-            placed = new Outlines[n];
+            outlines = new double[n][][];
             double r = 0.0;
             for (int i = 0; i < n; i++) {
                 double[] outline = sensors[i].getOutlineVertices();
-                placed[i] = Outlines.at(new double[][] {outline}, new RsTransform());
+                outlines[i] = sources.intern(new double[][] {outline});
                 for (int k = 0; k + 1 < outline.length; k += 2) {
                     r = Math.max(r, Math.hypot(outline[k], outline[k + 1]));
                 }
@@ -139,9 +133,9 @@ final class RobotShapes {
             return sensors[i];
         }
 
-        /** Sensor {@code i}'s outline at {@code pose}: one object per sensor, valid until the next call. */
-        Outlines outlinesAt(int i, RsTransform pose) {
-            return placed[i].place(pose);
+        /** Sensor {@code i}'s outline as outlines of one polygon (body coordinates), to place with {@link Outlines}. */
+        double[][] outline(int i) {
+            return outlines[i];
         }
     }
 

@@ -41,6 +41,8 @@ public final class World {
     private final List<PaintTrail> departedTrails = new CopyOnWriteArrayList<>();
     private IntConsumer placementListener = n -> { };
     private int joined;
+    /** The robots' outlines, one copy per design. */
+    private final OutlineSources outlineSources = new OutlineSources();
     /** The run's noise, which gives each robot that joins its own. */
     private Noise noise = Noise.OFF;
 
@@ -108,7 +110,7 @@ public final class World {
     /** A client's body joins the world as an unplaced robot. */
     public Robot addRobot(RsBody body, EventSink events) {
         joined++;
-        Robot r = new Robot(joined, body, events, noise.forRobot(joined));
+        Robot r = new Robot(joined, body, events, noise.forRobot(joined), outlineSources);
         robots.add(r);
         return r;
     }

@@ -10,28 +10,18 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 
 import rp1.rossum.RsBody;
-import rp1.rossum.event.RsEvent;
 import rp1.simulator.noise.RobotNoise;
 
 /** Robots come due earliest first, those due together in joining order, however they were filed. */
 class DueRobotsTest {
-    private static final EventSink NOWHERE = new EventSink() {
-        @Override
-        public void send(RsEvent event) {
-        }
-
-        @Override
-        public boolean isSubscribed(int eventCode, int index) {
-            return false;
-        }
-    };
-
     private final List<Robot> robots = new ArrayList<>();
     private final DueRobots due = new DueRobots();
+    private final OutlineSources sources = new OutlineSources();
 
     private Robot robot(int n) {
         while (robots.size() <= n) {
-            robots.add(new Robot(robots.size(), new RsBody("r" + robots.size()), NOWHERE, RobotNoise.NONE));
+            robots.add(new Robot(robots.size(), new RsBody("r" + robots.size()), EventSinks.NOWHERE, RobotNoise.NONE,
+                    sources));
         }
         return robots.get(n);
     }
