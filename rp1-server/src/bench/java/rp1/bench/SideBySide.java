@@ -22,9 +22,9 @@ import java.util.regex.Pattern;
  * end, per robot count, the medians and every round's ratio, as a table to quote.
  *
  * <p>The peers are not part of the project: DIR (or {@code $RP1_PEERS}) is the folder of their scripts,
- * whose own {@code setup.sh} builds them. Without it this part says so and measures nothing. ir-sim ({@code irsim_bench.sh}) runs too for counts up to 100,
- * as the peers' own table has it: it is the slow one (6.3 simulated s per wall s at 100 robots here,
- * 48 s for one round's 300 simulated seconds).
+ * whose own {@code setup.sh} builds them. Without it this part says so and measures nothing. ir-sim
+ * ({@code irsim_bench.sh}) runs too for counts up to 100, as the peers' own table has it: it is the
+ * slow one (6.3 simulated s per wall s at 100 robots here, 48 s for one round's 300 simulated seconds).
  */
 final class SideBySide {
     /** The environment variable naming the peers' folder when the argument does not. */

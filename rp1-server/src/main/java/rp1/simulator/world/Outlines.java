@@ -51,6 +51,11 @@ final class Outlines {
         return new Outlines(outlines).place(pose);
     }
 
+    /** Room to place {@code outlines} (each x0, y0, x1, y1, ... in body coordinates) in; not placed yet. */
+    static Outlines roomFor(double[][] outlines) {
+        return new Outlines(outlines);
+    }
+
     /** What this places: each polygon's x0, y0, x1, y1, ... in body coordinates. */
     double[][] source() {
         return source;

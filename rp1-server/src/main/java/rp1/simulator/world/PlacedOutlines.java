@@ -36,9 +36,12 @@ final class PlacedOutlines {
         return s.placed;
     }
 
-    /** A contact sensor's outline (as its one polygon, from the robot's shapes) placed at {@code pose}: valid until the next call. */
+    /**
+     * A contact sensor's outline (as its one polygon, from the robot's shapes) placed at {@code pose}:
+     * valid until the next call.
+     */
     Outlines sensor(double[][] outline, RsTransform pose) {
-        return sensors.computeIfAbsent(outline, o -> Outlines.at(o, pose)).place(pose);
+        return sensors.computeIfAbsent(outline, Outlines::roomFor).place(pose);
     }
 
     /** One robot's placement, and a buffer per design placed in it so far. */
@@ -52,7 +55,7 @@ final class PlacedOutlines {
             if (placed != null && placed.source() == source) {
                 return placed;
             }
-            return buffers.computeIfAbsent(source, o -> Outlines.at(o, new RsTransform()));
+            return buffers.computeIfAbsent(source, Outlines::roomFor);
         }
     }
 }

@@ -31,9 +31,7 @@ final class RobotShapes {
         double r = 0.0;
         for (int i = 0; i < shapes.length; i++) {
             own[i] = shapes[i].getOutlineVertices();
-            for (int k = 0; k + 1 < own[i].length; k += 2) {
-                r = Math.max(r, Math.hypot(own[i][k], own[i][k + 1]));
-            }
+            r = Math.max(r, farthest(own[i]));
         }
         outlines = sources.intern(own);
         reach = r;
@@ -113,9 +111,7 @@ final class RobotShapes {
             for (int i = 0; i < n; i++) {
                 double[] outline = sensors[i].getOutlineVertices();
                 outlines[i] = sources.intern(new double[][] {outline});
-                for (int k = 0; k + 1 < outline.length; k += 2) {
-                    r = Math.max(r, Math.hypot(outline[k], outline[k + 1]));
-                }
+                r = Math.max(r, farthest(outline));
             }
             reach = r;
         }
@@ -137,6 +133,15 @@ final class RobotShapes {
         double[][] outline(int i) {
             return outlines[i];
         }
+    }
+
+    /** How far the farthest vertex of {@code outline} (x0, y0, x1, y1, ...) is from the body origin, metres. */
+    private static double farthest(double[] outline) {
+        double r = 0.0;
+        for (int k = 0; k + 1 < outline.length; k += 2) {
+            r = Math.max(r, Math.hypot(outline[k], outline[k + 1]));
+        }
+        return r;
     }
 
     private static double[] map(double[] outline, RsTransform pose) {

@@ -9,26 +9,17 @@ import rp1.rossum.RsBodyCircle;
 import rp1.rossum.RsBodyPainter;
 import rp1.rossum.RsDifferentialSteering;
 import rp1.rossum.RsPlan;
-import rp1.rossum.event.RsEvent;
 import rp1.rossum.request.RsMotionRequest;
 import rp1.rossum.request.RsPainterChangeRequest;
 import rp1.simulator.world.EventSink;
+import rp1.simulator.world.EventSinks;
 import rp1.simulator.world.Robot;
 import rp1.simulator.world.World;
 
 /** A WhiteRoom with a painting round robot, driven through the world's own methods. */
 final class SnapshotWorlds {
     /** Takes no notice of events. */
-    static final EventSink IGNORE = new EventSink() {
-        @Override
-        public void send(RsEvent event) {
-        }
-
-        @Override
-        public boolean isSubscribed(int eventCode, int index) {
-            return false;
-        }
-    };
+    static final EventSink IGNORE = EventSinks.NOWHERE;
 
     private SnapshotWorlds() {
     }

@@ -2,10 +2,10 @@ package rp1.simulator.world;
 
 import rp1.rossum.event.RsEvent;
 
-/** Event sinks for tests of the world's parts that need a robot but not its client. */
-final class EventSinks {
+/** Event sinks for tests that need a robot but not its client. */
+public final class EventSinks {
     /** Subscribed to nothing; sends nowhere. */
-    static final EventSink NOWHERE = new EventSink() {
+    public static final EventSink NOWHERE = new EventSink() {
         @Override
         public void send(RsEvent event) {
         }
