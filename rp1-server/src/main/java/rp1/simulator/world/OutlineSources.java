@@ -2,6 +2,7 @@ package rp1.simulator.world;
 
 import java.util.Arrays;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.Map;
 
 /**
@@ -9,14 +10,21 @@ import java.util.Map;
  * contact sensors. A crowd is mostly of one design: its robots are then all placed from the same
  * arrays, which stay in the processor's cache, and {@link PlacedOutlines} needs a buffer per design
  * rather than one per robot. Outlines are the same only if every coordinate is the same to the bit,
- * so a robot placed from the shared copy is placed exactly as from its own.
+ * so a robot placed from the shared copy is placed exactly as from its own. Each set's convex
+ * {@link Hull} is made once as well.
  */
 final class OutlineSources {
     private final Map<Key, double[][]> known = new HashMap<>();
+    private final Map<double[][], Hull[]> hulls = new IdentityHashMap<>();
 
     /** The world's copy of {@code outlines}: the first equal set it was given. (Robots join rarely.) */
     synchronized double[][] intern(double[][] outlines) {
         return known.computeIfAbsent(new Key(outlines), Key::outlines);
+    }
+
+    /** The hulls of the polygons of {@code interned}, a copy {@link #intern} gave. */
+    synchronized Hull[] hulls(double[][] interned) {
+        return hulls.computeIfAbsent(interned, Hull::of);
     }
 
     /** Outlines compared by content, to the bit ({@link Arrays#deepEquals} compares doubles so). */

@@ -59,6 +59,8 @@ final class RobotContacts {
     private final Touches touches = new Touches();
     /** The outlines of the pair being searched, and of contact sensors, placed. */
     private final PlacedOutlines placed = new PlacedOutlines();
+    /** Settles most samples of robots pressed together without placing their outlines. */
+    private final SeparatingAxes axes = new SeparatingAxes();
 
     RobotContacts(Surroundings surroundings) {
         this.surroundings = surroundings;
@@ -190,7 +192,21 @@ final class RobotContacts {
             return circles;
         }
         // Within the sampling spacing only whether they touch matters, and the search for a vertex near
-        // an edge can end at the first; beyond it the search needs the exact distance to jump by.
+        // an edge can end at the first; beyond it the search needs the exact distance to jump by. Robots
+        // pressed together are mostly shown touching, or apart and near, without placing their outlines.
+        int found = axes.look(a, pa, b, pb);
+        if (found == SeparatingAxes.TOUCHING) {
+            return 0.0;
+        }
+        if (found == SeparatingAxes.APART) {
+            if (axes.near(pa, pb, SAMPLE_SPACING)) {
+                return SAMPLE_SPACING;
+            }
+            double distance = axes.distance(pa, pb);
+            if (!Double.isNaN(distance)) {
+                return distance <= SAMPLE_SPACING ? SAMPLE_SPACING : distance;
+            }
+        }
         Outlines outlinesA = placed.of(a, pa);
         Outlines outlinesB = placed.of(b, pb);
         double near = outlinesA.within(outlinesB, SAMPLE_SPACING);
@@ -259,6 +275,11 @@ final class RobotContacts {
         if (circlesGap(a, pa, b, pb) > CIRCLES_SLACK * (1.0 + Math.abs(pa.m13) + Math.abs(pa.m23))) {
             return false;
         }
+        // Most samples of robots pressed together are settled without placing their outlines.
+        int found = axes.look(a, pa, b, pb);
+        if (found != SeparatingAxes.UNKNOWN) {
+            return found == SeparatingAxes.TOUCHING;
+        }
         Outlines outlinesA = placed.of(a, pa);
         return outlinesA.overlaps(placed.of(b, pb));
     }
@@ -323,9 +344,17 @@ final class RobotContacts {
             return List.of();
         }
         List<RsBodyContactSensor> touching = new ArrayList<>();
-        Outlines otherShapes = placed.of(other, other.motion().getPoseAtTime(contact));
+        RsTransform otherPose = other.motion().getPoseAtTime(contact);
+        Outlines otherShapes = null;
         RsTransform pose = r.motion().getPoseAtTime(contact);
         for (int i = 0; i < sensors.count(); i++) {
+            if (apart(sensors.hull(i), pose, other, otherPose, TOUCHING + margin)) {
+                // Far beyond either limit (a bumper at the front of a robot run into from behind).
+                continue;
+            }
+            if (otherShapes == null) {
+                otherShapes = placed.of(other, otherPose);
+            }
             // Bit for bit the distance up to the limit, so a margin of 0 is the plain test.
             double d = placed.sensor(sensors.outline(i), pose).distance(otherShapes, TOUCHING + margin);
             if (d <= TOUCHING - margin) {
@@ -335,6 +364,25 @@ final class RobotContacts {
             }
         }
         return touching;
+    }
+
+    /**
+     * Whether the circle around {@code sensor} at {@code pose} keeps further than {@code limit} from the
+     * circles around each polygon of {@code other} at {@code otherPose}, by far more than rounding: then
+     * the sensor's distance to the other robot is above the limit, as {@link Outlines} computes it.
+     */
+    private static boolean apart(Hull sensor, RsTransform pose, Robot other, RsTransform otherPose, double limit) {
+        double x = pose.m11 * sensor.centreX() + pose.m12 * sensor.centreY() + pose.m13;
+        double y = pose.m21 * sensor.centreX() + pose.m22 * sensor.centreY() + pose.m23;
+        double beyond = limit + CIRCLES_SLACK * (1.0 + Math.abs(x) + Math.abs(y));
+        for (Hull h : other.shapes().hulls()) {
+            double dx = otherPose.m11 * h.centreX() + otherPose.m12 * h.centreY() + otherPose.m13 - x;
+            double dy = otherPose.m21 * h.centreX() + otherPose.m22 * h.centreY() + otherPose.m23 - y;
+            if (Math.sqrt(dx * dx + dy * dy) - sensor.radius() - h.radius() <= beyond) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**

@@ -17,6 +17,7 @@ import rp1.rossum.RsWall;
  */
 final class RobotShapes {
     private final double[][] outlines;
+    private final Hull[] hulls;
     private final double reach;
     /** The last pose {@link #asWalls} was asked for, and its answer. */
     private final LastPose wallsPose = new LastPose();
@@ -34,6 +35,7 @@ final class RobotShapes {
             r = Math.max(r, farthest(own[i]));
         }
         outlines = sources.intern(own);
+        hulls = sources.hulls(outlines);
         reach = r;
     }
 
@@ -80,6 +82,11 @@ final class RobotShapes {
         return outlines;
     }
 
+    /** The convex hull of each polygon of {@link #outlines()}, shared like them; only read. */
+    Hull[] hulls() {
+        return hulls;
+    }
+
     /** The body's contact sensors, in the body's order, with their outlines ready to place. */
     ContactSensors contactSensors() {
         return contactSensors;
@@ -93,6 +100,8 @@ final class RobotShapes {
         private final RsBodyContactSensor[] sensors;
         /** Each sensor's outline as outlines of one polygon, shared like the shapes' outlines. */
         private final double[][][] outlines;
+        /** Each sensor's hull, for the circle around it. */
+        private final Hull[] hulls;
         /** The largest distance of any sensor outline's vertex from the body origin, metres. */
         private final double reach;
 
@@ -107,10 +116,12 @@ final class RobotShapes {
             }
             sensors = Arrays.copyOf(found, n);
             outlines = new double[n][][];
+            hulls = new Hull[n];
             double r = 0.0;
             for (int i = 0; i < n; i++) {
                 double[] outline = sensors[i].getOutlineVertices();
                 outlines[i] = sources.intern(new double[][] {outline});
+                hulls[i] = sources.hulls(outlines[i])[0];
                 r = Math.max(r, farthest(outline));
             }
             reach = r;
@@ -132,6 +143,11 @@ final class RobotShapes {
         /** Sensor {@code i}'s outline as outlines of one polygon (body coordinates), to place with {@link Outlines}. */
         double[][] outline(int i) {
             return outlines[i];
+        }
+
+        /** Sensor {@code i}'s hull (body coordinates), shared like its outline. */
+        Hull hull(int i) {
+            return hulls[i];
         }
     }
 

@@ -77,7 +77,8 @@ class OutlinesTest {
         return 2 * Math.PI * random.nextDouble();
     }
 
-    private static RsBody roundRobot() {
+    /** The scale arena's wanderer: a round body with a range sensor and a bumper standing out in front. */
+    static RsBody roundRobot() {
         RsBody body = new RsBody("round");
         body.addPart(new RsBodyCircle(0.0, 0.0, 0.1));
         body.addPart(new RsBodyRangeSensor(new double[] {0.08, -0.01, 0.1, -0.01, 0.1, 0.01, 0.08, 0.01}, 4, 0.1, 0.0,
@@ -86,7 +87,7 @@ class OutlinesTest {
         return body;
     }
 
-    private static RsBody boxRobot() {
+    static RsBody boxRobot() {
         RsBody body = new RsBody("box");
         body.addPart(new RsBodyShape(new double[] {-0.1, -0.08, 0.12, -0.08, 0.12, 0.08, -0.1, 0.08}, 4));
         return body;
