@@ -46,6 +46,9 @@ import rp1.simulator.net.Transport;
  * find them on its own.
  */
 final class ClientLauncher implements LoadedClient.Listener {
+    /** How long a thread that has run nothing yet is given to show whose it is, milliseconds. */
+    private static final long NOT_YET_RUNNING_MILLIS = 50;
+
     /** What the server does when clients fail or finish. */
     interface Outcome {
         /** A client's {@code initialize()} threw; {@code failure} says so as the log did. */
@@ -158,9 +161,27 @@ final class ClientLauncher implements LoadedClient.Listener {
         }
     }
 
-    /** Whether a frame of {@code t}'s stack is of a class on the class path (in no named module). */
+    /**
+     * Whether a frame of {@code t}'s stack is of a class on the class path (in no named module). A thread
+     * a robot has just started, on a busy machine, may not have been given a processor by the time its
+     * run ends and has no frame yet to tell whose it is: it is given a moment to show one, and counted
+     * as the robot's if it still shows none.
+     */
     private static boolean runsClassPathCode(Thread t) {
-        for (StackTraceElement e : t.getStackTrace()) {
+        StackTraceElement[] stack = t.getStackTrace();
+        for (long waited = 0; stack.length <= 1 && t.isAlive(); waited++) {
+            if (waited == NOT_YET_RUNNING_MILLIS) {
+                return true;
+            }
+            try {
+                Thread.sleep(1);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return true;
+            }
+            stack = t.getStackTrace();
+        }
+        for (StackTraceElement e : stack) {
             if (e.getModuleName() == null && !e.isNativeMethod()) {
                 return true;
             }
