@@ -347,16 +347,23 @@ final class RobotContacts {
         RsTransform otherPose = other.motion().getPoseAtTime(contact);
         Outlines otherShapes = null;
         RsTransform pose = r.motion().getPoseAtTime(contact);
+        double reach = Math.max(r.shapes().reach(), sensors.reach());
         for (int i = 0; i < sensors.count(); i++) {
-            if (apart(sensors.hull(i), pose, other, otherPose, TOUCHING + margin)) {
-                // Far beyond either limit (a bumper at the front of a robot run into from behind).
+            // Most sensors are shown beyond both limits (a bumper at the front of a robot run into from
+            // behind) or touching the other robot from a few vertices.
+            int found = axes.lookBeyond(sensors.sensor(i), sensors.hulls(i), sensors.outline(i), reach, pose, other,
+                    otherPose, TOUCHING + margin);
+            if (found == SeparatingAxes.APART) {
                 continue;
             }
-            if (otherShapes == null) {
-                otherShapes = placed.of(other, otherPose);
+            double d = 0.0;
+            if (found == SeparatingAxes.UNKNOWN) {
+                if (otherShapes == null) {
+                    otherShapes = placed.of(other, otherPose);
+                }
+                // Bit for bit the distance up to the limit, so a margin of 0 is the plain test.
+                d = placed.sensor(sensors.outline(i), pose).distance(otherShapes, TOUCHING + margin);
             }
-            // Bit for bit the distance up to the limit, so a margin of 0 is the plain test.
-            double d = placed.sensor(sensors.outline(i), pose).distance(otherShapes, TOUCHING + margin);
             if (d <= TOUCHING - margin) {
                 touching.add(sensors.sensor(i));
             } else if (d <= TOUCHING + margin) {
@@ -364,25 +371,6 @@ final class RobotContacts {
             }
         }
         return touching;
-    }
-
-    /**
-     * Whether the circle around {@code sensor} at {@code pose} keeps further than {@code limit} from the
-     * circles around each polygon of {@code other} at {@code otherPose}, by far more than rounding: then
-     * the sensor's distance to the other robot is above the limit, as {@link Outlines} computes it.
-     */
-    private static boolean apart(Hull sensor, RsTransform pose, Robot other, RsTransform otherPose, double limit) {
-        double x = pose.m11 * sensor.centreX() + pose.m12 * sensor.centreY() + pose.m13;
-        double y = pose.m21 * sensor.centreX() + pose.m22 * sensor.centreY() + pose.m23;
-        double beyond = limit + CIRCLES_SLACK * (1.0 + Math.abs(x) + Math.abs(y));
-        for (Hull h : other.shapes().hulls()) {
-            double dx = otherPose.m11 * h.centreX() + otherPose.m12 * h.centreY() + otherPose.m13 - x;
-            double dy = otherPose.m21 * h.centreX() + otherPose.m22 * h.centreY() + otherPose.m23 - y;
-            if (Math.sqrt(dx * dx + dy * dy) - sensor.radius() - h.radius() <= beyond) {
-                return false;
-            }
-        }
-        return true;
     }
 
     /**

@@ -100,8 +100,8 @@ final class RobotShapes {
         private final RsBodyContactSensor[] sensors;
         /** Each sensor's outline as outlines of one polygon, shared like the shapes' outlines. */
         private final double[][][] outlines;
-        /** Each sensor's hull, for the circle around it. */
-        private final Hull[] hulls;
+        /** Each sensor's hull, as the hulls of its outline. */
+        private final Hull[][] hulls;
         /** The largest distance of any sensor outline's vertex from the body origin, metres. */
         private final double reach;
 
@@ -116,12 +116,12 @@ final class RobotShapes {
             }
             sensors = Arrays.copyOf(found, n);
             outlines = new double[n][][];
-            hulls = new Hull[n];
+            hulls = new Hull[n][];
             double r = 0.0;
             for (int i = 0; i < n; i++) {
                 double[] outline = sensors[i].getOutlineVertices();
                 outlines[i] = sources.intern(new double[][] {outline});
-                hulls[i] = sources.hulls(outlines[i])[0];
+                hulls[i] = sources.hulls(outlines[i]);
                 r = Math.max(r, farthest(outline));
             }
             reach = r;
@@ -145,8 +145,8 @@ final class RobotShapes {
             return outlines[i];
         }
 
-        /** Sensor {@code i}'s hull (body coordinates), shared like its outline. */
-        Hull hull(int i) {
+        /** Sensor {@code i}'s hull (body coordinates) as the hulls of {@link #outline}, shared like it. */
+        Hull[] hulls(int i) {
             return hulls[i];
         }
     }

@@ -92,7 +92,21 @@ final class SeparatingAxes {
     int look(Robot a, RsTransform pa, Robot b, RsTransform pb) {
         RobotShapes sa = a.shapes();
         RobotShapes sb = b.shapes();
-        return look(a, sa.hulls(), sa.outlines(), sa.reach(), pa, b, sb.hulls(), sb.outlines(), sb.reach(), pb);
+        return look(a, sa.hulls(), sa.outlines(), sa.reach(), pa, b, sb.hulls(), sb.outlines(), sb.reach(), pb, 0.0);
+    }
+
+    /**
+     * Whether contact sensor {@code sensor} (its outline {@code outline} with its hull, reaching
+     * {@code reach} from the body origin) at {@code pose} is further than {@code limit} from robot
+     * {@code b}'s outlines at {@code pb} as {@link Outlines#distance(Outlines, double)} would measure it
+     * ({@link #APART}), touches them ({@link #TOUCHING}: a distance of 0), or {@link #UNKNOWN}.
+     */
+    int lookBeyond(Object sensor, Hull[] hull, double[][] outline, double reach, RsTransform pose, Robot b,
+                   RsTransform pb, double limit) {
+        RobotShapes sb = b.shapes();
+        // Far more than rounding beyond the limit: the computed distance is then beyond it too.
+        double beyond = limit + SLACK * (1.0 + Math.abs(pose.m13) + Math.abs(pose.m23));
+        return look(sensor, hull, outline, reach, pose, b, sb.hulls(), sb.outlines(), sb.reach(), pb, beyond);
     }
 
     /**
@@ -102,7 +116,7 @@ final class SeparatingAxes {
      * are the outlines of (the last line that separated them is tried first when asked again).
      */
     private int look(Object a, Hull[] as, double[][] oa, double reachA, RsTransform pa, Object b, Hull[] bs,
-                     double[][] ob, double reachB, RsTransform pb) {
+                     double[][] ob, double reachB, RsTransform pb, double beyond) {
         this.a = a;
         this.as = as;
         this.oa = oa;
@@ -113,7 +127,7 @@ final class SeparatingAxes {
         this.reachB = reachB;
         fromA = room(fromA, as.length);
         fromB = room(fromB, bs.length);
-        double margin = margin(pa, pb);
+        double margin = Math.max(margin(pa, pb), beyond);
         closestA = -1;
         closest = Double.POSITIVE_INFINITY;
         for (int i = 0; i < as.length; i++) {

@@ -75,6 +75,8 @@ class SeparatingAxesTest {
         int shownCrossing = 0;
         int shownNear = 0;
         int measuredExactly = 0;
+        int sensorsBeyond = 0;
+        int sensorsTouching = 0;
         for (int i = 0; i < 40_000; i++) {
             Robot a = robots[random.nextInt(robots.length)];
             Robot b = robots[random.nextInt(robots.length)];
@@ -113,6 +115,21 @@ class SeparatingAxesTest {
                 shownCrossing++;
                 assertTrue(overlaps, "shown crossing, yet apart: pair " + i + " at a gap of " + wanted);
             }
+            RobotShapes.ContactSensors sensors = a.shapes().contactSensors();
+            for (int k = 0; k < sensors.count(); k++) {
+                // A contact sensor against the other robot, as the search asks which sensors touch it.
+                double limit = 1e-3 + (random.nextBoolean() ? 0.0 : 0.01 * random.nextDouble());
+                double expected = Outlines.at(sensors.outline(k), pa).distance(ob, limit);
+                int sensed = axes.lookBeyond(sensors.sensor(k), sensors.hulls(k), sensors.outline(k),
+                        a.shapes().reach(), pa, b, pb, limit);
+                if (sensed == SeparatingAxes.APART) {
+                    sensorsBeyond++;
+                    assertTrue(expected > limit, "a sensor shown beyond " + limit + ", pair " + i + ": " + expected);
+                } else if (sensed == SeparatingAxes.TOUCHING) {
+                    sensorsTouching++;
+                    assertEquals(0.0, expected, "a sensor shown touching, pair " + i);
+                }
+            }
             if (overlaps) {
                 overlapping++;
             } else if (distance > 2e-5) {
@@ -126,6 +143,8 @@ class SeparatingAxesTest {
         // The L is not convex: pairs with it are left to Outlines.
         assertTrue(measuredExactly > 0.5 * shownApart, "their distance measured: " + measuredExactly + " of "
                 + shownApart);
+        assertTrue(sensorsBeyond > 3_000 && sensorsTouching > 400, "sensors shown beyond their limit: "
+                + sensorsBeyond + ", touching: " + sensorsTouching);
         assertTrue(shownCrossing > 0.5 * overlapping, "most overlapping pairs are shown crossing: " + shownCrossing
                 + " of " + overlapping);
     }
