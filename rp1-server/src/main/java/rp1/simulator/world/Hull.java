@@ -23,6 +23,12 @@ final class Hull {
      * its greatest and falls.
      */
     private final boolean convex;
+    /**
+     * By octant of the plane's directions (see {@link #octant}), the vertex farthest along the octant's
+     * middle direction: where a climb to the farthest vertex along a direction starts, a few vertices
+     * from its end on any hull.
+     */
+    private final int[] starts = new int[8];
     /** The middle of the polygon's box, and the distance of its farthest vertex from there. */
     private final double centreX;
     private final double centreY;
@@ -33,6 +39,16 @@ final class Hull {
         this.y = y;
         this.vertex = vertex;
         this.convex = inOrder(vertex, count);
+        for (int o = 0; o < 8 && x.length > 0; o++) {
+            double angle = (o + 0.5) * Math.PI / 4;
+            int best = 0;
+            for (int k = 1; k < x.length; k++) {
+                if (along(k, Math.cos(angle), Math.sin(angle)) > along(best, Math.cos(angle), Math.sin(angle))) {
+                    best = k;
+                }
+            }
+            starts[o] = best;
+        }
         this.centreX = centreX;
         this.centreY = centreY;
         this.radius = radius;
@@ -202,10 +218,26 @@ final class Hull {
     }
 
     /**
-     * The vertex farthest along (dx, dy), climbing from vertex {@code from}: along a convex polygon the
-     * distance rises to its greatest and falls, so the climb ends there (up to rounding, which the
-     * caller's margin covers), in a few steps when {@code from} was the answer for a nearby direction.
+     * The vertex farthest along (dx, dy), climbing from the one farthest along the middle of its octant:
+     * along a convex polygon the distance rises to its greatest and falls, so the climb ends there (up
+     * to rounding, which the caller's margin covers), a few vertices on.
      */
+    int farthest(double dx, double dy) {
+        return x.length == 0 ? 0 : farthest(dx, dy, starts[octant(dx, dy)]);
+    }
+
+    /**
+     * Which eighth of the plane's directions (dx, dy) points into, counter-clockwise from the x axis
+     * (on a boundary, either side).
+     */
+    static int octant(double dx, double dy) {
+        if (dy >= 0) {
+            return dx >= 0 ? (dy < dx ? 0 : 1) : (dy > -dx ? 2 : 3);
+        }
+        return dx < 0 ? (-dy < -dx ? 4 : 5) : (-dy > dx ? 6 : 7);
+    }
+
+    /** The vertex farthest along (dx, dy), climbing from vertex {@code from} (see {@link #farthest(double, double)}). */
     int farthest(double dx, double dy, int from) {
         int n = x.length;
         if (n < 3) {

@@ -28,8 +28,8 @@ import rp1.rossum.RsTransform;
  * then be so nearly in line that their boxes are apart, which holds while {@code m} squared is above
  * about {@code 1e-14} times {@code C} and {@code E}. {@link #margin} is ten times that.
  *
- * <p>What it keeps from one question to the next (where each hull's climb ended, the last separating
- * line) only saves work: the answers are the same without it.
+ * <p>What it keeps from one question to the next (the last separating line) only saves work: the
+ * answers are the same without it.
  */
 final class SeparatingAxes {
     /** {@link #look} found nothing: ask {@link Outlines}. */
@@ -44,9 +44,6 @@ final class SeparatingAxes {
     /** The margin squared, per square metre of the coordinates' size times an edge's length. */
     private static final double MARGIN_SQUARED = 1.0e-13;
 
-    /** Where the last climb on each polygon of either robot ended, by polygon. */
-    private int[] fromA = new int[4];
-    private int[] fromB = new int[4];
     /** After {@link #gap}: the direction it measured along, and the vertex of each hull nearest the other. */
     private double directionX;
     private double directionY;
@@ -125,8 +122,6 @@ final class SeparatingAxes {
         this.bs = bs;
         this.ob = ob;
         this.reachB = reachB;
-        fromA = room(fromA, as.length);
-        fromB = room(fromB, bs.length);
         double margin = Math.max(margin(pa, pb), beyond);
         closestA = -1;
         closest = Double.POSITIVE_INFINITY;
@@ -235,10 +230,8 @@ final class SeparatingAxes {
         double by = -(pb.m12 * ux + pb.m22 * uy);
         directionX = ux;
         directionY = uy;
-        nearestA = ha.farthest(ax, ay, fromA[i]);
-        nearestB = hb.farthest(bx, by, fromB[j]);
-        fromA[i] = nearestA;
-        fromB[j] = nearestB;
+        nearestA = ha.farthest(ax, ay);
+        nearestB = hb.farthest(bx, by);
         // Measured from the centres, which the hulls' coordinates are not: subtract theirs.
         return dx * ux + dy * uy - (ha.along(nearestA, ax, ay) - ha.along(ha.centreX(), ha.centreY(), ax, ay))
                 - (hb.along(nearestB, bx, by) - hb.along(hb.centreX(), hb.centreY(), bx, by));
@@ -490,9 +483,5 @@ final class SeparatingAxes {
     private double size(RsTransform pa, RsTransform pb) {
         return Math.max(Math.max(Math.abs(pa.m13), Math.abs(pa.m23)), Math.max(Math.abs(pb.m13), Math.abs(pb.m23)))
                 + reachA + reachB;
-    }
-
-    private static int[] room(int[] from, int n) {
-        return from.length >= n ? from : new int[Math.max(n, 2 * from.length)];
     }
 }

@@ -56,6 +56,11 @@ class SeparatingAxesTest {
                 for (int from = 0; from < hull.size(); from++) {
                     assertEquals(farthest, hull.along(hull.farthest(dx, dy, from), dx, dy), 1e-15, "from vertex " + from);
                 }
+                assertEquals(farthest, hull.along(hull.farthest(dx, dy), dx, dy), 1e-15, "from the octant's start");
+                int octant = (int) (angle / (Math.PI / 4));
+                if (Math.abs(angle - (octant + 0.5) * Math.PI / 4) < 0.49 * Math.PI / 4) {
+                    assertEquals(octant, Hull.octant(dx, dy), "the octant of " + angle);
+                }
             }
         }
     }
