@@ -41,13 +41,7 @@ final class Hull {
         this.convex = inOrder(vertex, count);
         for (int o = 0; o < 8 && x.length > 0; o++) {
             double angle = (o + 0.5) * Math.PI / 4;
-            int best = 0;
-            for (int k = 1; k < x.length; k++) {
-                if (along(k, Math.cos(angle), Math.sin(angle)) > along(best, Math.cos(angle), Math.sin(angle))) {
-                    best = k;
-                }
-            }
-            starts[o] = best;
+            starts[o] = farthest(Math.cos(angle), Math.sin(angle), 0);
         }
         this.centreX = centreX;
         this.centreY = centreY;
@@ -212,9 +206,9 @@ final class Hull {
         return x[k] * dx + y[k] * dy;
     }
 
-    /** How far the point (px, py) lies along (dx, dy). */
-    double along(double px, double py, double dx, double dy) {
-        return px * dx + py * dy;
+    /** How far the centre lies along (dx, dy). */
+    double centreAlong(double dx, double dy) {
+        return centreX * dx + centreY * dy;
     }
 
     /**

@@ -43,12 +43,29 @@ final class SeparatingAxes {
     private static final double MARGIN = 1.0e-9;
     /** The margin squared, per square metre of the coordinates' size times an edge's length. */
     private static final double MARGIN_SQUARED = 1.0e-13;
+    /**
+     * Slack of the bounds of {@link #distance} and {@link #lookBeyond}, per metre of the coordinates'
+     * size: far above rounding.
+     */
+    private static final double SLACK = 1.0e-9;
+    /** Most vertices {@link #distance} takes from one polygon. */
+    private static final int MOST_NEAR = 9;
 
-    /** After {@link #gap}: the direction it measured along, and the vertex of each hull nearest the other. */
+    /**
+     * After {@link #gap}: the direction it measured along, in the plane and in each body's coordinates
+     * (b's turned round, pointing back at a), and the vertex of each hull nearest the other along it.
+     */
     private double directionX;
     private double directionY;
+    private double localAX;
+    private double localAY;
+    private double localBX;
+    private double localBY;
     private int nearestA;
     private int nearestB;
+    /** After {@link #between}: how far the centre of one hull lies from the other's, in the plane. */
+    private double betweenX;
+    private double betweenY;
     /**
      * The last line that separated a pair of polygons, as a direction in the plane, and which pair:
      * the search asks about the same two robots sample after sample, and they move little between.
@@ -81,6 +98,15 @@ final class SeparatingAxes {
     private Hull[] bs;
     private double[][] ob;
     private double reachB;
+
+    /** Room for a few placed vertices of either polygon ({@link #placeAround}, {@link #placeArc}). */
+    private final double[] corners = new double[6];
+    private final double[] others = new double[6];
+    private final double[] arcCornersA = new double[2 * (MOST_NEAR + 2)];
+    private final double[] arcCornersB = new double[2 * (MOST_NEAR + 2)];
+    /** Room for the arcs {@link #front} finds. */
+    private final int[] frontA = new int[2];
+    private final int[] frontB = new int[2];
 
     /**
      * Whether {@code a}'s outlines at {@code pa} and {@code b}'s at {@code pb} are apart or touching, as
@@ -127,17 +153,13 @@ final class SeparatingAxes {
         closest = Double.POSITIVE_INFINITY;
         for (int i = 0; i < as.length; i++) {
             Hull ha = as[i];
-            double ax = pa.m11 * ha.centreX() + pa.m12 * ha.centreY() + pa.m13;
-            double ay = pa.m21 * ha.centreX() + pa.m22 * ha.centreY() + pa.m23;
             for (int j = 0; j < bs.length; j++) {
                 Hull hb = bs[j];
-                double dx = pb.m11 * hb.centreX() + pb.m12 * hb.centreY() + pb.m13 - ax;
-                double dy = pb.m21 * hb.centreX() + pb.m22 * hb.centreY() + pb.m23 - ay;
-                double d = Math.sqrt(dx * dx + dy * dy); // Math.hypot guards against overflow, at a cost
+                double d = between(ha, pa, hb, pb);
                 if (d - ha.radius() - hb.radius() >= margin || ha.size() == 0 || hb.size() == 0) {
                     continue;
                 }
-                int found = look(pa, ha, i, pb, hb, j, dx, dy, d, margin);
+                int found = look(pa, ha, i, pb, hb, j, betweenX, betweenY, d, margin);
                 if (found != APART) {
                     return found;
                 }
@@ -230,11 +252,15 @@ final class SeparatingAxes {
         double by = -(pb.m12 * ux + pb.m22 * uy);
         directionX = ux;
         directionY = uy;
+        localAX = ax;
+        localAY = ay;
+        localBX = bx;
+        localBY = by;
         nearestA = ha.farthest(ax, ay);
         nearestB = hb.farthest(bx, by);
         // Measured from the centres, which the hulls' coordinates are not: subtract theirs.
-        return dx * ux + dy * uy - (ha.along(nearestA, ax, ay) - ha.along(ha.centreX(), ha.centreY(), ax, ay))
-                - (hb.along(nearestB, bx, by) - hb.along(hb.centreX(), hb.centreY(), bx, by));
+        return dx * ux + dy * uy - (ha.along(nearestA, ax, ay) - ha.centreAlong(ax, ay))
+                - (hb.along(nearestB, bx, by) - hb.centreAlong(bx, by));
     }
 
     /**
@@ -307,7 +333,7 @@ final class SeparatingAxes {
                 }
             }
         }
-        if (nearI < 0 || lineBetween(as[nearI], pa, nearI, bs[nearJ], pb, nearJ) == null) {
+        if (nearI < 0 || Double.isNaN(gapBetween(as[nearI], pa, nearI, bs[nearJ], pb, nearJ))) {
             return Double.NaN;
         }
         double[] p = placeAround(oa[nearI], as[nearI].vertex(nearestA), pa, corners);
@@ -323,13 +349,13 @@ final class SeparatingAxes {
                 if (ha.size() == 0 || hb.size() == 0 || circlesGap(ha, pa, hb, pb) > c + slack) {
                     continue;
                 }
-                double[] u = lineBetween(ha, pa, i, hb, pb, j);
-                if (u == null || !ha.convex() || !hb.convex()) {
+                double gap = gapBetween(ha, pa, i, hb, pb, j);
+                if (Double.isNaN(gap) || !ha.convex() || !hb.convex()) {
                     return Double.NaN;
                 }
-                double reach = c - u[2] + slack;
-                int[] arcA = front(oa[i], ha.vertex(nearestA), u[0], u[1], reach, frontA);
-                int[] arcB = front(ob[j], hb.vertex(nearestB), u[3], u[4], reach, frontB);
+                double reach = c - gap + slack;
+                int[] arcA = front(oa[i], ha.vertex(nearestA), localAX, localAY, reach, frontA);
+                int[] arcB = front(ob[j], hb.vertex(nearestB), localBX, localBY, reach, frontB);
                 if (arcA == null || arcB == null) {
                     return Double.NaN;
                 }
@@ -341,47 +367,29 @@ final class SeparatingAxes {
         return Math.sqrt(best);
     }
 
-    /** Relative slack of {@link #distance}'s bounds, per metre of the coordinates' size: far above rounding. */
-    private static final double SLACK = 1.0e-9;
-    /** Most vertices {@link #distance} takes from one polygon. */
-    private static final int MOST_NEAR = 9;
-    private final int[] frontA = new int[2];
-    private final int[] frontB = new int[2];
-    private final double[] arcCornersA = new double[2 * (MOST_NEAR + 2)];
-    private final double[] arcCornersB = new double[2 * (MOST_NEAR + 2)];
-    private final double[] line = new double[5];
+    /**
+     * How far the centre of hull {@code hb} at {@code pb} lies from that of {@code ha} at {@code pa};
+     * sets {@link #betweenX} and {@link #betweenY}.
+     */
+    private double between(Hull ha, RsTransform pa, Hull hb, RsTransform pb) {
+        betweenX = placedX(pb, hb.centreX(), hb.centreY()) - placedX(pa, ha.centreX(), ha.centreY());
+        betweenY = placedY(pb, hb.centreX(), hb.centreY()) - placedY(pa, ha.centreX(), ha.centreY());
+        return Math.sqrt(betweenX * betweenX + betweenY * betweenY); // Math.hypot guards against overflow, at a cost
+    }
 
     /** How far apart the circles around polygon hulls {@code ha} at {@code pa} and {@code hb} at {@code pb} are. */
-    private static double circlesGap(Hull ha, RsTransform pa, Hull hb, RsTransform pb) {
-        double dx = pb.m11 * hb.centreX() + pb.m12 * hb.centreY() + pb.m13
-                - (pa.m11 * ha.centreX() + pa.m12 * ha.centreY() + pa.m13);
-        double dy = pb.m21 * hb.centreX() + pb.m22 * hb.centreY() + pb.m23
-                - (pa.m21 * ha.centreX() + pa.m22 * ha.centreY() + pa.m23);
-        return Math.sqrt(dx * dx + dy * dy) - ha.radius() - hb.radius();
+    private double circlesGap(Hull ha, RsTransform pa, Hull hb, RsTransform pb) {
+        return between(ha, pa, hb, pb) - ha.radius() - hb.radius();
     }
 
     /**
-     * The line from hull {@code ha}'s centre to {@code hb}'s: its direction in a's body coordinates, the
-     * gap between the hulls along it, and b's direction away from a in b's body coordinates (x, y, gap,
-     * x, y); the nearest vertices are set. Null if the centres coincide.
+     * The gap between hulls {@code ha} and {@code hb} along the line between their centres; the
+     * directions in each body's coordinates and the nearest vertices are set (see {@link #gap}). NaN if
+     * the centres coincide.
      */
-    private double[] lineBetween(Hull ha, RsTransform pa, int i, Hull hb, RsTransform pb, int j) {
-        double dx = pb.m11 * hb.centreX() + pb.m12 * hb.centreY() + pb.m13
-                - (pa.m11 * ha.centreX() + pa.m12 * ha.centreY() + pa.m13);
-        double dy = pb.m21 * hb.centreX() + pb.m22 * hb.centreY() + pb.m23
-                - (pa.m21 * ha.centreX() + pa.m22 * ha.centreY() + pa.m23);
-        double d = Math.sqrt(dx * dx + dy * dy);
-        if (!(d > 0.0)) {
-            return null;
-        }
-        double ux = dx / d;
-        double uy = dy / d;
-        line[2] = gap(ha, pa, i, hb, pb, j, dx, dy, ux, uy);
-        line[0] = pa.m11 * ux + pa.m21 * uy;
-        line[1] = pa.m12 * ux + pa.m22 * uy;
-        line[3] = -(pb.m11 * ux + pb.m21 * uy);
-        line[4] = -(pb.m12 * ux + pb.m22 * uy);
-        return line;
+    private double gapBetween(Hull ha, RsTransform pa, int i, Hull hb, RsTransform pb, int j) {
+        double d = between(ha, pa, hb, pb);
+        return d > 0.0 ? gap(ha, pa, i, hb, pb, j, betweenX, betweenY, betweenX / d, betweenY / d) : Double.NaN;
     }
 
     /**
@@ -447,11 +455,8 @@ final class SeparatingAxes {
 
     /** Whether (x, y) is within {@code limit} of the edge from the vertex at {@code e} in {@code xy} to the next. */
     private static boolean within(double x, double y, double[] xy, int e, double limit) {
-        return Math.sqrt(Outlines.squaredToSegment(x, y, xy[e], xy[e + 1], xy[e + 2], xy[e + 3])) <= limit;
+        return Math.sqrt(squared(x, y, xy, e)) <= limit;
     }
-
-    private final double[] corners = new double[6];
-    private final double[] others = new double[6];
 
     /**
      * Vertex k of {@code polygon} and the vertices before and after it, placed at {@code p} as
@@ -467,10 +472,18 @@ final class SeparatingAxes {
     }
 
     private static void place(double[] polygon, int k, RsTransform p, double[] xy, int at) {
-        double bx = polygon[2 * k];
-        double by = polygon[2 * k + 1];
-        xy[at] = p.m11 * bx + p.m12 * by + p.m13;
-        xy[at + 1] = p.m21 * bx + p.m22 * by + p.m23;
+        xy[at] = placedX(p, polygon[2 * k], polygon[2 * k + 1]);
+        xy[at + 1] = placedY(p, polygon[2 * k], polygon[2 * k + 1]);
+    }
+
+    /** The point (x, y) of a body placed at {@code p}: x, computed as {@link Outlines#place} computes it. */
+    private static double placedX(RsTransform p, double x, double y) {
+        return p.m11 * x + p.m12 * y + p.m13;
+    }
+
+    /** The point (x, y) of a body placed at {@code p}: y, computed as {@link Outlines#place} computes it. */
+    private static double placedY(RsTransform p, double x, double y) {
+        return p.m21 * x + p.m22 * y + p.m23;
     }
 
     /** The room a separating line must leave on each side, metres (see the class comment). */
