@@ -139,6 +139,22 @@ public abstract class RsMotion extends RsComponent {
     }
 
     /**
+     * Writes the pose at {@code t} into {@code into}: bit for bit what {@link #getPoseAtTime(double)}
+     * gives, without a new transform. The server's contact search asks for two poses at each of its
+     * samples, a third of what a crowd of robots allocated.
+     */
+    public void getPoseAtTime(double t, RsTransform into) {
+        into.copy(getStateAtTime(t));
+    }
+
+    /** For a motion that computes its poses in place: the pose at {@code t} in a new transform. */
+    final RsTransform poseInNewTransform(double t) {
+        RsTransform pose = new RsTransform();
+        getPoseAtTime(t, pose);
+        return pose;
+    }
+
+    /**
      * How the body point (x, y) (body coordinates) moves at the current time: its world position, its
      * velocity, the body heading and whether the motion is under way. Wheels use it for their encoders
      * and for drawing casters along their direction of travel.

@@ -45,7 +45,38 @@ public class RsMotionCircle extends RsMotion {
     /** The start pose rotated about the pivot by rate times elapsed time (position and heading). */
     @Override
     protected RsTransform getStateAtTime(double t) {
-        return new RsTransform(RsTransform.rotationAbout(turnRate * (clamp(t) - time0), cx, cy), transform0);
+        return poseInNewTransform(t);
+    }
+
+    /**
+     * {@link RsTransform#rotationAbout} the pivot, then the start pose, in place: the rotation's
+     * elements are the ones {@code rotationAbout} sets (its cosine and sine of the angle, once) and the
+     * product is {@link RsTransform#concat}'s, term for term, so the pose is the same to the bit.
+     */
+    @Override
+    public void getPoseAtTime(double t, RsTransform into) {
+        double angle = turnRate * (clamp(t) - time0);
+        double c = Math.cos(angle);
+        double s = Math.sin(angle);
+        RsTransform b = transform0;
+        double a11 = c;
+        double a12 = -s;
+        double a13 = cx - (c * cx - s * cy);
+        double a21 = s;
+        double a22 = c;
+        double a23 = cy - (s * cx + c * cy);
+        double n11 = a11 * b.m11 + a12 * b.m21;
+        double n12 = a11 * b.m12 + a12 * b.m22;
+        double n13 = a11 * b.m13 + a12 * b.m23 + a13;
+        double n21 = a21 * b.m11 + a22 * b.m21;
+        double n22 = a21 * b.m12 + a22 * b.m22;
+        double n23 = a21 * b.m13 + a22 * b.m23 + a23;
+        into.m11 = n11;
+        into.m12 = n12;
+        into.m13 = n13;
+        into.m21 = n21;
+        into.m22 = n22;
+        into.m23 = n23;
     }
 
     @Override

@@ -37,10 +37,14 @@ public class RsMotionLine extends RsMotion {
 
     @Override
     protected RsTransform getStateAtTime(double t) {
+        return poseInNewTransform(t);
+    }
+
+    @Override
+    public void getPoseAtTime(double t, RsTransform into) {
         double d = velocity * (clamp(t) - time0);
-        RsTransform pose = new RsTransform(transform0);
-        pose.setOffset(transform0.m13 + d * ux, transform0.m23 + d * uy);
-        return pose;
+        into.copy(transform0);
+        into.setOffset(transform0.m13 + d * ux, transform0.m23 + d * uy);
     }
 
     /** The signed linear velocity: negative when travelling opposite to the heading. */

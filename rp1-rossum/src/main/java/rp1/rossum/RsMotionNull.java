@@ -42,6 +42,11 @@ public class RsMotionNull extends RsMotion {
     }
 
     @Override
+    public void getPoseAtTime(double t, RsTransform into) {
+        into.copy(transform0);
+    }
+
+    @Override
     public RsMotionDepiction getMotionDepictionAtBodyPoint(double x, double y) {
         return new RsMotionDepiction(time, transform.map(x, y), new RsVector(), transform.getTheta(), false);
     }

@@ -198,4 +198,37 @@ class MotionTest {
         assertEquals(-0.5, d.getSignedSpeed(), EPS);
         assertEquals(true, d.isMoving());
     }
+
+    /**
+     * A pose written into a transform of the caller's is the pose a new transform gets, to the bit, for
+     * lines, arcs, turns in place and stops, before, during and after the motion; and an arc's is the
+     * start pose rotated about the pivot as {@link RsTransform#rotationAbout} and the product of two
+     * transforms compute it.
+     */
+    @Test
+    void aPoseWrittenInPlaceIsTheSameToTheBit() {
+        double[][] requests = {{0.5, 0.0}, {-0.3, 0.0}, {0.4, 1.3}, {0.2, -2.1}, {0.0, 2.0}, {0.0, 0.0}};
+        RsTransform into = new RsTransform();
+        for (double[] q : requests) {
+            RsBody b = started(1.25, -3.5, 0.7, q[0], q[1], 2.5);
+            RsMotion m = b.motion;
+            for (double t = 0.0; t < 5.0; t += 0.0371) {
+                RsTransform fresh = m.getPoseAtTime(t);
+                m.getPoseAtTime(t, into);
+                assertArrayEquals(bits(fresh), bits(into), m + " at " + t);
+                if (m instanceof RsMotionCircle c) {
+                    double angle = c.getTurnRate() * (Math.max(m.time0, Math.min(t, m.time1)) - m.time0);
+                    RsPoint pivot = c.getPivot();
+                    RsTransform before = new RsTransform(RsTransform.rotationAbout(angle, pivot.x, pivot.y), m.transform0);
+                    assertArrayEquals(bits(before), bits(into), m + " at " + t);
+                }
+            }
+        }
+    }
+
+    private static long[] bits(RsTransform p) {
+        return new long[] {Double.doubleToRawLongBits(p.m11), Double.doubleToRawLongBits(p.m12),
+                Double.doubleToRawLongBits(p.m13), Double.doubleToRawLongBits(p.m21),
+                Double.doubleToRawLongBits(p.m22), Double.doubleToRawLongBits(p.m23)};
+    }
 }

@@ -107,6 +107,20 @@ public final class Robot {
         return m == null ? new RsTransform() : m.getPoseAtTime(time);
     }
 
+    /**
+     * {@link #poseAt(double)} written into {@code into}, which is returned: for the searches that ask
+     * for every neighbour's pose at every step and keep none of them.
+     */
+    RsTransform poseAt(double time, RsTransform into) {
+        RsMotion m = body.getMotion();
+        if (m == null) {
+            into.copy(new RsTransform());
+        } else {
+            m.getPoseAtTime(time, into);
+        }
+        return into;
+    }
+
     /** The order in which the robot joined the world, from 1 (dense: parts keep per-robot arrays by it). */
     public int getNumber() {
         return number;

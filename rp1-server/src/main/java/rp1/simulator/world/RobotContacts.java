@@ -61,6 +61,13 @@ final class RobotContacts {
     private final PlacedOutlines placed = new PlacedOutlines();
     /** Settles most samples of robots pressed together without placing their outlines. */
     private final SeparatingAxes axes = new SeparatingAxes();
+    /**
+     * The poses of the pair at the time being looked at, written anew at each look (nothing keeps
+     * them: placed outlines remember a pose by copying it). A new pose for each of the two robots at
+     * every sample was a third of what a crowd allocated.
+     */
+    private final RsTransform poseA = new RsTransform();
+    private final RsTransform poseB = new RsTransform();
 
     RobotContacts(Surroundings surroundings) {
         this.surroundings = surroundings;
@@ -119,7 +126,7 @@ final class RobotContacts {
             int n = room(a);
             searchedIn[n] = run;
             double reach = a.shapes().reach() + a.speedBound() * (to - from) + SAMPLE_SPACING;
-            RsTransform p = a.poseAt(from);
+            RsTransform p = a.poseAt(from, poseA);
             for (Robot b : surroundings.robotsNear(a, p.m13 - reach, p.m23 - reach, p.m13 + reach, p.m23 + reach)) {
                 if (coveredBy(b, a)) {
                     continue;
@@ -185,8 +192,8 @@ final class RobotContacts {
      * whether they touch: 0 if they do, else {@code SAMPLE_SPACING}.
      */
     private double gap(Robot a, Robot b, double t) {
-        RsTransform pa = a.motion().getPoseAtTime(t);
-        RsTransform pb = b.motion().getPoseAtTime(t);
+        RsTransform pa = poseOf(a, t, poseA);
+        RsTransform pb = poseOf(b, t, poseB);
         double circles = circlesGap(a, pa, b, pb);
         if (circles > SAMPLE_SPACING) {
             return circles;
@@ -219,6 +226,12 @@ final class RobotContacts {
      */
     private static double circlesGap(Robot a, RsTransform pa, Robot b, RsTransform pb) {
         return Math.hypot(pa.m13 - pb.m13, pa.m23 - pb.m23) - a.shapes().reach() - b.shapes().reach();
+    }
+
+    /** The robot's pose at {@code t} written into {@code into}, which is returned. */
+    private static RsTransform poseOf(Robot r, double t, RsTransform into) {
+        r.motion().getPoseAtTime(t, into);
+        return into;
     }
 
     /**
@@ -268,8 +281,8 @@ final class RobotContacts {
     }
 
     private boolean touch(Robot a, Robot b, double t) {
-        RsTransform pa = a.motion().getPoseAtTime(t);
-        RsTransform pb = b.motion().getPoseAtTime(t);
+        RsTransform pa = poseOf(a, t, poseA);
+        RsTransform pb = poseOf(b, t, poseB);
         // Circles that keep apart settle it without building either outline (most samples of a pair
         // closing in).
         if (circlesGap(a, pa, b, pb) > CIRCLES_SLACK * (1.0 + Math.abs(pa.m13) + Math.abs(pa.m23))) {
@@ -344,9 +357,9 @@ final class RobotContacts {
             return List.of();
         }
         List<RsBodyContactSensor> touching = new ArrayList<>();
-        RsTransform otherPose = other.motion().getPoseAtTime(contact);
+        RsTransform otherPose = poseOf(other, contact, poseB);
         Outlines otherShapes = null;
-        RsTransform pose = r.motion().getPoseAtTime(contact);
+        RsTransform pose = poseOf(r, contact, poseA);
         double reach = Math.max(r.shapes().reach(), sensors.reach());
         for (int i = 0; i < sensors.count(); i++) {
             // Most sensors are shown beyond both limits (a bumper at the front of a robot run into from

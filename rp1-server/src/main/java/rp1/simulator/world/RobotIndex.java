@@ -20,6 +20,8 @@ final class RobotIndex {
     private Robot[] byNumber = new Robot[16];
     /** Each filed robot's box at 4 × its number: x0, y0, x1, y1. */
     private double[] boxes = new double[4 * 16];
+    /** A robot's pose while it is filed (only its position is read). */
+    private final RsTransform scratch = new RsTransform();
 
     /** An index over {@code area} (robots outside it still work, less selectively). */
     RobotIndex(RsRectangle area) {
@@ -44,7 +46,7 @@ final class RobotIndex {
             byNumber = Arrays.copyOf(byNumber, Math.max(n + 1, byNumber.length * 2));
             boxes = Arrays.copyOf(boxes, 4 * byNumber.length);
         }
-        RsTransform pose = r.poseAt(time);
+        RsTransform pose = r.poseAt(time, scratch);
         double x = pose.m13;
         double y = pose.m23;
         double grow = r.shapes().reach() + r.speedBound() * horizon + RobotContacts.SAMPLE_SPACING;

@@ -26,6 +26,11 @@ final class Surroundings {
     private final WallIndex walls;
     private final RobotIndex robots;
     private final boolean robotsInteract;
+    /**
+     * The pose of a robot a sensor might see, written anew for each (its walls are kept by a copy of
+     * the pose they were made at).
+     */
+    private final RsTransform seenPose = new RsTransform();
     private int onFloor;
 
     /**
@@ -131,7 +136,7 @@ final class Surroundings {
         }
         List<RsWall[]> seen = new ArrayList<>();
         for (Robot o : robots.near(x0, y0, x1, y1, r, r.sightFrom(p))) {
-            RsTransform b = o.poseAt(time);
+            RsTransform b = o.poseAt(time, seenPose);
             if (r.mightSee(p, o, b)) {
                 seen.add(o.obstaclesAt(b));
             }
