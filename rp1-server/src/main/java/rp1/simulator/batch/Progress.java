@@ -38,7 +38,7 @@ public final class Progress {
         } else {
             // Put together by hand: a format string is parsed and interpreted anew for every run.
             out.println("[" + done + "/" + total + "] seed " + o.run().seed() + " on " + o.run().plan()
-                    + configuration(o.run()) + ": " + o.report().endReason() + " (" + tenths(o.wallSeconds()) + " s)");
+                    + configuration(o.run()) + ": " + o.report().endReason() + " (" + elapsed(o.wallSeconds()) + ")");
         }
         out.flush();
     }
@@ -50,10 +50,17 @@ public final class Progress {
         }
     }
 
-    /** Wall seconds (not negative) to the nearest tenth, with one decimal. */
-    static String tenths(double seconds) {
+    /**
+     * Wall seconds (not negative) as a reader wants them: below a second in whole milliseconds (a bumper
+     * run takes a few, which tenths of a second showed as "0.0 s"), else to the nearest tenth of a second.
+     */
+    static String elapsed(double seconds) {
+        long millis = Math.round(seconds * 1000.0);
+        if (millis < 1000) {
+            return millis + " ms";
+        }
         long t = Math.round(seconds * 10.0);
-        return (t / 10) + "." + (t % 10);
+        return (t / 10) + "." + (t % 10) + " s";
     }
 
     private String bar() {

@@ -44,12 +44,14 @@ class ProgressTest {
     }
 
     @Test
-    void wallSecondsAreShownToTheNearestTenth() {
-        assertEquals("0.0", Progress.tenths(0.0));
-        assertEquals("0.0", Progress.tenths(0.049));
-        assertEquals("0.2", Progress.tenths(0.198));
-        assertEquals("1.3", Progress.tenths(1.25));
-        assertEquals("10.0", Progress.tenths(9.96));
-        assertEquals("601.5", Progress.tenths(601.47));
+    void wallTimeIsShownInMillisecondsBelowASecondAndInTenthsAbove() {
+        assertEquals("0 ms", Progress.elapsed(0.0));
+        assertEquals("4 ms", Progress.elapsed(0.0042));
+        assertEquals("49 ms", Progress.elapsed(0.049));
+        assertEquals("198 ms", Progress.elapsed(0.198));
+        assertEquals("1.0 s", Progress.elapsed(0.9996));
+        assertEquals("1.3 s", Progress.elapsed(1.25));
+        assertEquals("10.0 s", Progress.elapsed(9.96));
+        assertEquals("601.5 s", Progress.elapsed(601.47));
     }
 }
