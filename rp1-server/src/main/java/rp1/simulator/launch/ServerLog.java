@@ -4,6 +4,7 @@ import java.io.FileWriter;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.PrintWriter;
+import java.time.Clock;
 import java.time.LocalTime;
 import java.util.function.DoubleSupplier;
 
@@ -24,6 +25,11 @@ public final class ServerLog extends RsLogAdapter {
     private final PrintStream standardOutput;
     private final PrintStream standardError;
     private volatile DoubleSupplier simTime = () -> 0.0;
+    /**
+     * The wall clock in the time zone the log was opened in: {@link LocalTime#now()} looks the default
+     * zone up for every line, which was most of writing a line in a sweep's runs.
+     */
+    private final Clock wallClock = Clock.systemDefaultZone();
     private boolean closed;
 
     private ServerLog(PrintWriter file, PrintStream standardOutput, PrintStream standardError, boolean verbose) {
@@ -100,7 +106,7 @@ public final class ServerLog extends RsLogAdapter {
     private void line(String level, String message, boolean important) {
         double t = simTime.getAsDouble();
         synchronized (this) {
-            write(format(level, LocalTime.now(), t, message), important);
+            write(format(level, LocalTime.now(wallClock), t, message), important);
         }
     }
 
