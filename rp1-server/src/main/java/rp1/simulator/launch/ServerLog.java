@@ -27,7 +27,7 @@ public final class ServerLog extends RsLogAdapter {
     private volatile DoubleSupplier simTime = () -> 0.0;
     /**
      * The wall clock in the time zone the log was opened in: {@link LocalTime#now()} looks the default
-     * zone up for every line, which was most of writing a line in a sweep's runs.
+     * zone up for every line, which was more than half of writing a line in a sweep's runs.
      */
     private final Clock wallClock = Clock.systemDefaultZone();
     private boolean closed;
