@@ -103,8 +103,7 @@ public final class Robot {
 
     /** The pose at {@code time} under the current motion (identity before the first placement). */
     RsTransform poseAt(double time) {
-        RsMotion m = body.getMotion();
-        return m == null ? new RsTransform() : m.getPoseAtTime(time);
+        return poseAt(time, new RsTransform());
     }
 
     /**

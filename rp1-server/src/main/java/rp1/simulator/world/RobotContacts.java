@@ -192,8 +192,8 @@ final class RobotContacts {
      * whether they touch: 0 if they do, else {@code SAMPLE_SPACING}.
      */
     private double gap(Robot a, Robot b, double t) {
-        RsTransform pa = poseOf(a, t, poseA);
-        RsTransform pb = poseOf(b, t, poseB);
+        RsTransform pa = a.poseAt(t, poseA);
+        RsTransform pb = b.poseAt(t, poseB);
         double circles = circlesGap(a, pa, b, pb);
         if (circles > SAMPLE_SPACING) {
             return circles;
@@ -226,12 +226,6 @@ final class RobotContacts {
      */
     private static double circlesGap(Robot a, RsTransform pa, Robot b, RsTransform pb) {
         return Math.hypot(pa.m13 - pb.m13, pa.m23 - pb.m23) - a.shapes().reach() - b.shapes().reach();
-    }
-
-    /** The robot's pose at {@code t} written into {@code into}, which is returned. */
-    private static RsTransform poseOf(Robot r, double t, RsTransform into) {
-        r.motion().getPoseAtTime(t, into);
-        return into;
     }
 
     /**
@@ -281,8 +275,8 @@ final class RobotContacts {
     }
 
     private boolean touch(Robot a, Robot b, double t) {
-        RsTransform pa = poseOf(a, t, poseA);
-        RsTransform pb = poseOf(b, t, poseB);
+        RsTransform pa = a.poseAt(t, poseA);
+        RsTransform pb = b.poseAt(t, poseB);
         // Circles that keep apart settle it without building either outline (most samples of a pair
         // closing in).
         if (circlesGap(a, pa, b, pb) > CIRCLES_SLACK * (1.0 + Math.abs(pa.m13) + Math.abs(pa.m23))) {
@@ -357,9 +351,9 @@ final class RobotContacts {
             return List.of();
         }
         List<RsBodyContactSensor> touching = new ArrayList<>();
-        RsTransform otherPose = poseOf(other, contact, poseB);
+        RsTransform otherPose = other.poseAt(contact, poseB);
         Outlines otherShapes = null;
-        RsTransform pose = poseOf(r, contact, poseA);
+        RsTransform pose = r.poseAt(contact, poseA);
         double reach = Math.max(r.shapes().reach(), sensors.reach());
         for (int i = 0; i < sensors.count(); i++) {
             // Most sensors are shown beyond both limits (a bumper at the front of a robot run into from

@@ -176,7 +176,7 @@ final class SeparatingAxes {
     private int look(RsTransform pa, Hull ha, int i, RsTransform pb, Hull hb, int j, double dx, double dy, double d,
                      double margin) {
         if (a == lineA && b == lineB && i == lineI && j == lineJ) {
-            double gap = gap(ha, pa, i, hb, pb, j, dx, dy, lineX, lineY);
+            double gap = gap(ha, pa, hb, pb, dx, dy, lineX, lineY);
             if (gap >= margin) {
                 return apart(i, j, gap);
             }
@@ -184,7 +184,7 @@ final class SeparatingAxes {
         if (!(d > 0.0)) {
             return UNKNOWN;
         }
-        double gap = gap(ha, pa, i, hb, pb, j, dx, dy, dx / d, dy / d);
+        double gap = gap(ha, pa, hb, pb, dx, dy, dx / d, dy / d);
         if (gap >= margin) {
             return remember(i, j, gap);
         }
@@ -207,7 +207,7 @@ final class SeparatingAxes {
             double ny = p.m21 * h.normalX(edge) + p.m22 * h.normalY(edge);
             // b's outward normals point towards a.
             double scale = (k < 2 ? 1.0 : -1.0) / Math.sqrt(nx * nx + ny * ny);
-            gap = gap(ha, pa, i, hb, pb, j, dx, dy, nx * scale, ny * scale);
+            gap = gap(ha, pa, hb, pb, dx, dy, nx * scale, ny * scale);
             if (gap >= margin) {
                 return remember(i, j, gap);
             }
@@ -239,12 +239,11 @@ final class SeparatingAxes {
     }
 
     /**
-     * How far apart hull {@code ha} (polygon i) at {@code pa} and hull {@code hb} (polygon j) at
-     * {@code pb} lie along the unit direction (ux, uy), from a's side towards b's, with the centre of
+     * How far apart hull {@code ha} at {@code pa} and hull {@code hb} at {@code pb} lie along the unit direction (ux, uy), from a's side towards b's, with the centre of
      * b's at (dx, dy) from a's; sets the nearest vertices.
      */
-    private double gap(Hull ha, RsTransform pa, int i, Hull hb, RsTransform pb, int j, double dx, double dy,
-                       double ux, double uy) {
+    private double gap(Hull ha, RsTransform pa, Hull hb, RsTransform pb, double dx, double dy, double ux,
+                       double uy) {
         // The direction in each body's coordinates: the pose's rotation transposed.
         double ax = pa.m11 * ux + pa.m21 * uy;
         double ay = pa.m12 * ux + pa.m22 * uy;
@@ -333,7 +332,7 @@ final class SeparatingAxes {
                 }
             }
         }
-        if (nearI < 0 || Double.isNaN(gapBetween(as[nearI], pa, nearI, bs[nearJ], pb, nearJ))) {
+        if (nearI < 0 || Double.isNaN(gapBetween(as[nearI], pa, bs[nearJ], pb))) {
             return Double.NaN;
         }
         double[] p = placeAround(oa[nearI], as[nearI].vertex(nearestA), pa, corners);
@@ -349,7 +348,7 @@ final class SeparatingAxes {
                 if (ha.size() == 0 || hb.size() == 0 || circlesGap(ha, pa, hb, pb) > c + slack) {
                     continue;
                 }
-                double gap = gapBetween(ha, pa, i, hb, pb, j);
+                double gap = gapBetween(ha, pa, hb, pb);
                 if (Double.isNaN(gap) || !ha.convex() || !hb.convex()) {
                     return Double.NaN;
                 }
@@ -387,9 +386,9 @@ final class SeparatingAxes {
      * directions in each body's coordinates and the nearest vertices are set (see {@link #gap}). NaN if
      * the centres coincide.
      */
-    private double gapBetween(Hull ha, RsTransform pa, int i, Hull hb, RsTransform pb, int j) {
+    private double gapBetween(Hull ha, RsTransform pa, Hull hb, RsTransform pb) {
         double d = between(ha, pa, hb, pb);
-        return d > 0.0 ? gap(ha, pa, i, hb, pb, j, betweenX, betweenY, betweenX / d, betweenY / d) : Double.NaN;
+        return d > 0.0 ? gap(ha, pa, hb, pb, betweenX, betweenY, betweenX / d, betweenY / d) : Double.NaN;
     }
 
     /**
