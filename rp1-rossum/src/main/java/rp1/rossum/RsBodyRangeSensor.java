@@ -113,9 +113,9 @@ public class RsBodyRangeSensor extends RsBodySensor {
     @Override
     public boolean computeAndSetState(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
         mappedPos = pose.map(xDetector, yDetector);
-        double heading = pose.getTheta() + sightAngle;
-        double dx = maxRange * Math.cos(heading);
-        double dy = maxRange * Math.sin(heading);
+        look(pose, sightAngle);
+        double dx = maxRange * lookCos;
+        double dy = maxRange * lookSin;
         boolean wasHot = hot;
         int previousBin = rBin;
         double nearest = 1.0;

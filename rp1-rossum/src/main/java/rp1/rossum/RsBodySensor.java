@@ -19,6 +19,14 @@ public abstract class RsBodySensor extends RsBodyShape {
     protected boolean stateChange;
     /** Simulation time of the last reading, seconds. */
     protected double timeStateComputed;
+    /** Whether {@link #lookCos} and {@link #lookSin} hold the direction for the rotation and offset below. */
+    private transient boolean lookKnown;
+    private transient double lookM11;
+    private transient double lookM21;
+    private transient double lookOffset;
+    /** The cosine and sine of the direction {@link #look} worked out last. */
+    transient double lookCos;
+    transient double lookSin;
 
     /** A sensor with the given outline (see {@link RsBodyShape#RsBodyShape(double[], int)}). */
     public RsBodySensor(double[] point, int nPoint) {
@@ -29,6 +37,27 @@ public abstract class RsBodySensor extends RsBodyShape {
     @Override
     public boolean isASensor() {
         return true;
+    }
+
+    /**
+     * Sets {@link #lookCos} and {@link #lookSin} to {@code Math.cos} and {@code Math.sin} of the
+     * heading of {@code pose} ({@link RsTransform#getTheta()}) plus {@code offset}. They are kept from
+     * the last call while the pose's rotation and the offset are the same to the bit, which is the
+     * case at every step of a robot driving straight or standing still: an arc tangent, a sine and a
+     * cosine per sensor per step were a third of a range or target sensor's reading.
+     */
+    final void look(RsTransform pose, double offset) {
+        if (lookKnown && RsTransform.sameBits(pose.m11, lookM11) && RsTransform.sameBits(pose.m21, lookM21)
+                && RsTransform.sameBits(offset, lookOffset)) {
+            return;
+        }
+        double heading = pose.getTheta() + offset;
+        lookCos = Math.cos(heading);
+        lookSin = Math.sin(heading);
+        lookM11 = pose.m11;
+        lookM21 = pose.m21;
+        lookOffset = offset;
+        lookKnown = true;
     }
 
     /** Whether the last {@link #computeAndSetState} changed the reportable state. */

@@ -157,9 +157,9 @@ public class RsBodyTargetSensor extends RsBodySensor {
     public boolean computeAndSetState(double simTime, RsPlan plan, RsWall[] walls, RsTransform pose) {
         mappedPos = pose.map(xDetector, yDetector);
         // Twice the sight angle: RP1 0.60 applied it twice, and clients saw that (behavior.md 8.2, 12).
-        double axis = pose.getTheta() + 2.0 * sightAngle;
-        vx = Math.cos(axis);
-        vy = Math.sin(axis);
+        look(pose, 2.0 * sightAngle);
+        vx = lookCos;
+        vy = lookSin;
         boolean wasHot = hot;
         RsTarget previous = targetDetected;
         String previousName = targetName;

@@ -186,6 +186,20 @@ public class RsTransform implements Serializable {
         m23 = t.m23;
     }
 
+    /**
+     * Whether {@code t} is this transform to the bit (null is not): what was worked out for one pose
+     * can be kept for a pose asked about again only if they are the same number for number.
+     */
+    boolean sameBits(RsTransform t) {
+        return t != null && sameBits(m11, t.m11) && sameBits(m12, t.m12) && sameBits(m13, t.m13)
+                && sameBits(m21, t.m21) && sameBits(m22, t.m22) && sameBits(m23, t.m23);
+    }
+
+    /** Whether two numbers are the same to the bit. */
+    static boolean sameBits(double a, double b) {
+        return Double.doubleToRawLongBits(a) == Double.doubleToRawLongBits(b);
+    }
+
     /** The length a unit vector has after mapping (1 for rigid transforms, pixels per metre for a view). */
     public double getScale() {
         return Math.sqrt(m11 * m11 + m21 * m21);

@@ -254,4 +254,81 @@ class SensorTest {
         assertEquals(1.0, paint.getTimeOfLastStateComputation());
         assertEquals(false, b.processSensors(2.0, plan, TestPlans.pose(0.6, 0, 0)));
     }
+
+    /**
+     * A sensor keeps the direction it looked in while the robot's heading stays the same to the bit
+     * (a robot driving straight): every reading along such a drive, and after each turn, is the one a
+     * sensor that never looked before gives, to the bit.
+     */
+    @Test
+    void readingsAlongStraightDrivesAndTurnsAreThoseOfAFreshSensor() {
+        RsPlan plan = new RsPlan();
+        TestPlans.box(plan, "east", 2.0, -3, 2.1, 3);
+        TestPlans.box(plan, "north", -3, 2.0, 3, 2.1);
+        TestPlans.target(plan, "beacon", 1.5, 1.5);
+        java.util.Random random = new java.util.Random(7);
+        RsBodyRangeSensor range = new RsBodyRangeSensor(HEAD, 4, 0.1, 0, 0.3, 2.5, 8);
+        RsBodyTargetSensor eye = new RsBodyTargetSensor(HEAD, 4, 0.1, 0, 0.2, Math.PI / 2, 4.0, 5, 8);
+        int seen = 0;
+        for (int turn = 0; turn < 50; turn++) {
+            RsTransform pose = TestPlans.pose(0, 0, 2 * Math.PI * random.nextDouble());
+            for (int step = 0; step < 20; step++) {
+                pose.m13 = -1 + 2 * random.nextDouble();
+                pose.m23 = -1 + 2 * random.nextDouble();
+                double time = turn * 20 + step;
+                RsBodyRangeSensor freshRange = new RsBodyRangeSensor(HEAD, 4, 0.1, 0, 0.3, 2.5, 8);
+                RsBodyTargetSensor freshEye = new RsBodyTargetSensor(HEAD, 4, 0.1, 0, 0.2, Math.PI / 2, 4.0, 5, 8);
+                range.computeAndSetState(time, plan, pose);
+                freshRange.computeAndSetState(time, plan, pose);
+                eye.computeAndSetState(time, plan, pose);
+                freshEye.computeAndSetState(time, plan, pose);
+                assertEquals(text(freshRange.getSensorEvent(time)), text(range.getSensorEvent(time)));
+                assertEquals(text(freshEye.getSensorEvent(time)), text(eye.getSensorEvent(time)));
+                seen += range.getHot() ? 1 : 0;
+            }
+        }
+        assertEquals(true, seen > 100 && seen < 900, seen + " of 1000 readings see a wall");
+    }
+
+    /** Every number of a range or target reading, as its bits. */
+    private static String text(rp1.rossum.event.RsSensorEvent e) {
+        if (e instanceof RsRangeSensorEvent) {
+            RsRangeSensorEvent r = (RsRangeSensorEvent) e;
+            return java.util.Arrays.toString(new Object[] {r.status, bits(r.x), bits(r.y), bits(r.range),
+                r.getNameOfObjectDetected()});
+        }
+        RsTargetSensorEvent t = (RsTargetSensorEvent) e;
+        return java.util.Arrays.toString(new Object[] {t.status, bits(t.x), bits(t.y), bits(t.ux), bits(t.uy),
+            bits(t.xDetection), bits(t.yDetection), bits(t.range), bits(t.bearing)});
+    }
+
+    private static long bits(double d) {
+        return Double.doubleToRawLongBits(d);
+    }
+
+    /** A sensor whose sight angle its own class changes between readings looks the new way at once. */
+    @Test
+    void aSensorTurnedBetweenReadingsAtTheSamePoseLooksTheNewWay() {
+        RsPlan plan = new RsPlan();
+        TestPlans.box(plan, "north wall", -1, 2.0, 1, 2.1);
+        class Turret extends RsBodyRangeSensor {
+            private static final long serialVersionUID = 1L;
+
+            Turret() {
+                super(HEAD, 4, 0, 0, 0, 4.0, 4);
+            }
+
+            void aim(double angle) {
+                sightAngle = angle;
+            }
+        }
+        Turret s = new Turret();
+        RsTransform pose = TestPlans.pose(0, 0, 0);
+        s.computeAndSetState(1.0, plan, pose);
+        assertEquals(false, event(s).status, "looking east, along the wall");
+        s.aim(Math.PI / 2);
+        s.computeAndSetState(2.0, plan, pose);
+        assertEquals(true, event(s).status, "looking north, at it");
+        assertEquals(2.0, event(s).range, EPS);
+    }
 }
