@@ -47,14 +47,22 @@ public class RsBody extends RsComponent {
     private transient RsBodyShape[] interactive;
     /** The contact sensors in part order, kept for the same reason (looked at at every motion's start and end). */
     private transient RsBodyContactSensor[] contactSensors;
-    /** Each contact sensor's outline where the last motion started, filled again at every start. */
+    /** Each contact sensor's outline where the last motion started, placed again when one starts elsewhere. */
     private transient RsSegment[][] contactOutlines;
     /**
      * The interactive shapes' outlines where the last motion started, one after another in part order,
-     * filled again at every start: the collision search takes them as one body, so that a wall is
-     * searched once for all the parts rather than once per part.
+     * placed again when one starts elsewhere: the collision search takes them as one body, so that a
+     * wall is searched once for all the parts rather than once per part.
      */
     private transient RsSegment[] interactiveOutline;
+    /**
+     * Where {@link #interactiveOutline} and {@link #contactOutlines} were last placed (null: not yet).
+     * A robot halted as soon as it starts a motion starts the next one from the same pose: in a crowd
+     * of a thousand wanderers, two thirds of the motions started where the one before had, and their
+     * outlines are kept rather than placed again. The shapes' outlines never change once built.
+     */
+    private transient RsTransform interactivePlacedAt;
+    private transient RsTransform contactsPlacedAt;
     private int bodyID;
 
     /** An empty body; null is kept as the name and transmitted as "". */
@@ -76,6 +84,8 @@ public class RsBody extends RsComponent {
         sensors = null;
         interactive = null;
         contactSensors = null;
+        interactivePlacedAt = null;
+        contactsPlacedAt = null;
         part.joined(this);
         if (part instanceof RsWheelSystem) {
             wheelSystem = (RsWheelSystem) part;
@@ -136,6 +146,10 @@ public class RsBody extends RsComponent {
 
     /** {@link #interactiveOutline}, filled for the current motion's start pose. */
     private RsSegment[] interactiveOutline() {
+        RsTransform start = motion.transform0;
+        if (interactiveOutline != null && start.sameBits(interactivePlacedAt)) {
+            return interactiveOutline;
+        }
         RsBodyShape[] shapes = interactive();
         int n = 0;
         for (RsBodyShape s : shapes) {
@@ -150,7 +164,6 @@ public class RsBody extends RsComponent {
             }
             interactiveOutline = into;
         }
-        RsTransform start = motion.transform0;
         int at = 0;
         for (RsBodyShape s : shapes) {
             RsSegment[] o = s.collisionOutline();
@@ -158,6 +171,7 @@ public class RsBody extends RsComponent {
                 start.map2(o[i], into[at++]);
             }
         }
+        interactivePlacedAt = new RsTransform(start);
         return into;
     }
 
@@ -426,6 +440,8 @@ public class RsBody extends RsComponent {
     private void flagContactSensors(RsWall[] walls) {
         RsBodyContactSensor[] sensors = contactSensors();
         RsSegment[][] outlines = contactOutlines;
+        RsTransform start = motion.transform0;
+        boolean placed = start.sameBits(contactsPlacedAt);
         double earliest = Double.POSITIVE_INFINITY;
         for (int i = 0; i < sensors.length; i++) {
             RsBodyContactSensor s = sensors[i];
@@ -434,7 +450,7 @@ public class RsBody extends RsComponent {
             if (walls.length == 0) {
                 continue;
             }
-            RsSegment[] body = BodyOutline.mapInto(s.outline(), motion.transform0, outlines[i]);
+            RsSegment[] body = placed ? outlines[i] : BodyOutline.mapInto(s.outline(), start, outlines[i]);
             outlines[i] = body;
             double[] prepared = motion.prepare(body, body.length);
             for (RsWall wall : walls) {
@@ -451,6 +467,9 @@ public class RsBody extends RsComponent {
                     s.setCollisionTime(t);
                 }
             }
+        }
+        if (walls.length > 0) {
+            contactsPlacedAt = new RsTransform(start);
         }
         for (RsBodyContactSensor s : sensors) {
             if (s.getCollision() && s.getCollisionTime() > earliest) {

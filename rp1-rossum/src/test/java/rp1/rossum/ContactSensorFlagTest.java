@@ -49,6 +49,25 @@ class ContactSensorFlagTest {
         assertEquals(bumper.getID(), pressed[0].sensorID);
     }
 
+    /**
+     * A robot halted at once starts its next motion from the same pose, where its sensors' outlines
+     * are kept from the last search; a sensor added in between is placed and flagged all the same.
+     */
+    @Test
+    void aSensorAddedBetweenTwoMotionsFromTheSamePoseIsFlagged() {
+        RsBody b = robot(bumper);
+        b.place(0.0, 0, 0, 0);
+        b.computeMotion(0.0, new RsMotionRequest(1.0, 0.0, 3.0), wallsAcross("ahead", 1.0, 1.1));
+        assertEquals(0.84, bumper.getCollisionTime(), EPS);
+        b.addPart(tail);
+        b.place(1.0, 0, 0, 0);
+        b.computeMotion(1.0, new RsMotionRequest(-1.0, 0.0, 3.0), wallsAcross("behind", -1.1, -1.0));
+        assertFalse(bumper.getCollision());
+        assertTrue(tail.getCollision());
+        assertEquals(0.84, tail.getCollisionTime(), EPS, "the tail's face at -0.16 reaches x = -1");
+        assertEquals("behind", tail.getCollisionObjectName());
+    }
+
     @Test
     void aSensorListedEarlierLosesItsFlagWhenALaterOneTouchesFirst() {
         RsBody b = robot(bumper, tail);
