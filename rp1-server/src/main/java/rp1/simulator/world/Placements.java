@@ -52,12 +52,12 @@ final class Placements {
         if (requested.isEmpty()) {
             return randomPlacement(r, time);
         }
-        for (RsPlacement p : plan.getPlacementArray()) {
-            if (p.getName().equals(requested)) {
-                String blocked = blockedBy(r, p.x, p.y, p.orientation, time);
-                return blocked == null ? Placement.at(time, p.getName(), p.x, p.y, p.orientation)
-                        : Placement.refused(time, requested, blocked + " is in the way");
-            }
+        // Names are unique in a plan, which keeps its objects by name: placing ten thousand robots by
+        // name, each scanning a copy of the plan's placements, took seconds.
+        if (plan.getObjectByName(requested) instanceof RsPlacement p) {
+            String blocked = blockedBy(r, p.x, p.y, p.orientation, time);
+            return blocked == null ? Placement.at(time, p.getName(), p.x, p.y, p.orientation)
+                    : Placement.refused(time, requested, blocked + " is in the way");
         }
         return Placement.refused(time, requested, "the floor plan has no placement of that name");
     }

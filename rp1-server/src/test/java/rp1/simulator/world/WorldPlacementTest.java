@@ -102,6 +102,8 @@ class WorldPlacementTest {
         assertEquals("another robot is in the way", w.place(second, "a", 0.0));
         assertEquals("a wall is in the way", w.place(second, "inBlock", 0.0));
         assertEquals("the floor plan has no placement of that name", w.place(second, "nowhere", 0.0));
+        assertEquals("the floor plan has no placement of that name", w.place(second, "block", 0.0),
+                "an obstacle's name is not a placement's");
         w.place(second, "b", 0.0);
         Robot third = w.addRobot(round("third"), new Inbox());
         assertEquals("every placement of the floor plan is taken or blocked", w.place(third, "", 0.0));
