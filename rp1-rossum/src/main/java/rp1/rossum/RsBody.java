@@ -56,13 +56,13 @@ public class RsBody extends RsComponent {
      */
     private transient RsSegment[] interactiveOutline;
     /**
-     * Where {@link #interactiveOutline} and {@link #contactOutlines} were last placed (null: not yet).
-     * A robot halted as soon as it starts a motion starts the next one from the same pose: in a crowd
-     * of a thousand wanderers, two thirds of the motions started where the one before had, and their
-     * outlines are kept rather than placed again. The shapes' outlines never change once built.
+     * Where {@link #interactiveOutline} and {@link #contactOutlines} were last placed, both by the same
+     * search (null: not yet). A robot halted as soon as it starts a motion starts the next one from the
+     * same pose: in a crowd of a thousand wanderers, two thirds of the motions started where the one
+     * before had, and their outlines are kept rather than placed again. The shapes' outlines never
+     * change once built.
      */
-    private transient RsTransform interactivePlacedAt;
-    private transient RsTransform contactsPlacedAt;
+    private transient RsTransform outlinesPlacedAt;
     private int bodyID;
 
     /** An empty body; null is kept as the name and transmitted as "". */
@@ -84,8 +84,7 @@ public class RsBody extends RsComponent {
         sensors = null;
         interactive = null;
         contactSensors = null;
-        interactivePlacedAt = null;
-        contactsPlacedAt = null;
+        outlinesPlacedAt = null;
         part.joined(this);
         if (part instanceof RsWheelSystem) {
             wheelSystem = (RsWheelSystem) part;
@@ -144,12 +143,9 @@ public class RsBody extends RsComponent {
         return kept;
     }
 
-    /** {@link #interactiveOutline}, filled for the current motion's start pose. */
-    private RsSegment[] interactiveOutline() {
+    /** Fills {@link #interactiveOutline} for the current motion's start pose. */
+    private void placeInteractiveOutline() {
         RsTransform start = motion.transform0;
-        if (interactiveOutline != null && start.sameBits(interactivePlacedAt)) {
-            return interactiveOutline;
-        }
         RsBodyShape[] shapes = interactive();
         int n = 0;
         for (RsBodyShape s : shapes) {
@@ -171,8 +167,6 @@ public class RsBody extends RsComponent {
                 start.map2(o[i], into[at++]);
             }
         }
-        interactivePlacedAt = new RsTransform(start);
-        return into;
     }
 
     private RsBodyContactSensor[] contactSensors() {
@@ -408,11 +402,16 @@ public class RsBody extends RsComponent {
         if (motion == null || walls == null) {
             return false;
         }
-        flagContactSensors(walls);
+        boolean placed = walls.length > 0 && motion.transform0.sameBits(outlinesPlacedAt);
+        flagContactSensors(walls, placed);
         boolean hit = false;
         // Most turns on the spot have no wall near: nothing to place the outlines for.
         if (walls.length > 0) {
-            RsSegment[] outline = interactiveOutline();
+            if (!placed) {
+                placeInteractiveOutline();
+                outlinesPlacedAt = new RsTransform(motion.transform0);
+            }
+            RsSegment[] outline = interactiveOutline;
             hit = outline.length > 0
                     && RsBodyPart.searchForCollisions(outline, walls, RsBodyPart.nearestFirst(walls, motion), motion);
         }
@@ -436,12 +435,12 @@ public class RsBody extends RsComponent {
      * minimum is withdrawn, so only the sensor holding the earliest contact stays flagged. The
      * general search over all parts that follows never re-examines these flags, which is why a
      * sensor can still go hot although the chassis stopped the motion before the sensor touched.
+     * {@code placed}: the sensors' outlines are already placed at the motion's start.
      */
-    private void flagContactSensors(RsWall[] walls) {
+    private void flagContactSensors(RsWall[] walls, boolean placed) {
         RsBodyContactSensor[] sensors = contactSensors();
         RsSegment[][] outlines = contactOutlines;
         RsTransform start = motion.transform0;
-        boolean placed = start.sameBits(contactsPlacedAt);
         double earliest = Double.POSITIVE_INFINITY;
         for (int i = 0; i < sensors.length; i++) {
             RsBodyContactSensor s = sensors[i];
@@ -467,9 +466,6 @@ public class RsBody extends RsComponent {
                     s.setCollisionTime(t);
                 }
             }
-        }
-        if (walls.length > 0) {
-            contactsPlacedAt = new RsTransform(start);
         }
         for (RsBodyContactSensor s : sensors) {
             if (s.getCollision() && s.getCollisionTime() > earliest) {

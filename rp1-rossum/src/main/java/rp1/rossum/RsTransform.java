@@ -189,8 +189,11 @@ public class RsTransform implements Serializable {
     /**
      * Whether {@code t} is this transform to the bit (null is not): what was worked out for one pose
      * can be kept for a pose asked about again only if they are the same number for number.
+     *
+     * @param t the transform to compare, or null
+     * @return whether all six elements have the same bits
      */
-    boolean sameBits(RsTransform t) {
+    public boolean sameBits(RsTransform t) {
         return t != null && sameBits(m11, t.m11) && sameBits(m12, t.m12) && sameBits(m13, t.m13)
                 && sameBits(m21, t.m21) && sameBits(m22, t.m22) && sameBits(m23, t.m23);
     }

@@ -31,8 +31,6 @@ final class Sight implements RobotIndex.Reach {
     private final double[] rays;
     /** Per target sensor: detector x, detector y, maximum range, one after another. */
     private final double[] fields;
-    private final int rayCount;
-    private final int fieldCount;
     private final double reach;
     /**
      * At the pose last aimed at: the box of {@link #box} (x0, y0, x1, y1), then each ray's ends (x0,
@@ -40,7 +38,6 @@ final class Sight implements RobotIndex.Reach {
      * robot's step reads is a wait for memory, and the rays, their ends and the box were eight of them.
      */
     private final double[] placed;
-    private final int centres;
     private final LastPose at = new LastPose();
 
     Sight(RsBody body) {
@@ -73,11 +70,13 @@ final class Sight implements RobotIndex.Reach {
                 max = Math.max(max, Math.hypot(t.getXDetector(), t.getYDetector()) + t.getMaxRange());
             }
         }
-        rayCount = nRays;
-        fieldCount = nFields;
         reach = max;
-        centres = 4 + RAY * nRays;
-        placed = new double[centres + CENTRE * nFields];
+        placed = new double[centres() + CENTRE * nFields];
+    }
+
+    /** Where the fields' centres start in {@link #placed}: after the box and the rays' ends. */
+    private int centres() {
+        return 4 + rays.length;
     }
 
     /** How far from the body origin the sensors reach, metres (0 without any). */
@@ -106,15 +105,16 @@ final class Sight implements RobotIndex.Reach {
     @Override
     public boolean within(double x, double y, double radius) {
         double[] p = placed;
-        for (int i = 0, at = 4; i < rayCount; i++, at += RAY) {
+        int centres = centres();
+        for (int at = 4; at < centres; at += RAY) {
             if (Outlines.squaredToSegment(x, y, p[at], p[at + 1], p[at + 2], p[at + 3]) <= radius * radius) {
                 return true;
             }
         }
-        for (int i = 0, at = centres; i < fieldCount; i++, at += CENTRE) {
+        for (int from = 0, at = centres; from < fields.length; from += FIELD, at += CENTRE) {
             double dx = p[at];
             double dy = p[at + 1];
-            double limit = fields[FIELD * i + 2] + radius;
+            double limit = fields[from + 2] + radius;
             if ((x - dx) * (x - dx) + (y - dy) * (y - dy) <= limit * limit) {
                 return true;
             }
@@ -149,7 +149,7 @@ final class Sight implements RobotIndex.Reach {
         double y0 = Double.POSITIVE_INFINITY;
         double x1 = Double.NEGATIVE_INFINITY;
         double y1 = Double.NEGATIVE_INFINITY;
-        for (int i = 0, from = 0, at = 4; i < rayCount; i++, from += RAY, at += RAY) {
+        for (int from = 0, at = 4; from < rays.length; from += RAY, at += RAY) {
             double rx0 = pose.m11 * rays[from] + pose.m12 * rays[from + 1] + pose.m13;
             double ry0 = pose.m21 * rays[from] + pose.m22 * rays[from + 1] + pose.m23;
             double rx1 = rx0 + pose.m11 * rays[from + 2] + pose.m12 * rays[from + 3];
@@ -163,7 +163,7 @@ final class Sight implements RobotIndex.Reach {
             x1 = Math.max(x1, Math.max(rx0, rx1));
             y1 = Math.max(y1, Math.max(ry0, ry1));
         }
-        for (int i = 0, from = 0, at = centres; i < fieldCount; i++, from += FIELD, at += CENTRE) {
+        for (int from = 0, at = centres(); from < fields.length; from += FIELD, at += CENTRE) {
             double fx = pose.m11 * fields[from] + pose.m12 * fields[from + 1] + pose.m13;
             double fy = pose.m21 * fields[from] + pose.m22 * fields[from + 1] + pose.m23;
             double r = fields[from + 2];
