@@ -71,6 +71,8 @@ final class ClientLauncher implements LoadedClient.Listener {
     private final ServerLog log;
     private final AtomicInteger running;
     private volatile Outcome outcome;
+    /** Set when the run stops: the clients not started by then never are. */
+    private volatile boolean calledOff;
 
     private ClientLauncher(List<LoadedClient> clients, ServerConfig config, ServerLog log) {
         this.clients = clients;
@@ -109,6 +111,17 @@ final class ClientLauncher implements LoadedClient.Listener {
     /** The group the simulation's thread belongs in: the one of the robots' threads. */
     ThreadGroup robotThreads() {
         return robots;
+    }
+
+    /**
+     * The run is stopping: the clients still waiting their turn are never started (the launcher goes
+     * on through them at once), and their threads, where prepared, end.
+     */
+    void callOffWaiting() {
+        calledOff = true;
+        for (LoadedClient c : clients) {
+            c.callOff();
+        }
     }
 
     /** The clients' threads started so far (ended or not). Threads a client starts itself are not among them. */
@@ -225,13 +238,21 @@ final class ClientLauncher implements LoadedClient.Listener {
 
     /**
      * Starts each client once the one before is ready, each given at most {@code connectTimeout}, then
-     * runs {@code whenStarted} (not if interrupted: the server is stopping).
+     * runs {@code whenStarted} (not if the server is stopping). The next client's thread is prepared
+     * while a client initializes; the client itself starts only when its turn comes.
      */
     private void startInOrder(Runnable whenStarted) {
         try {
-            for (LoadedClient c : clients) {
+            for (int i = 0; i < clients.size(); i++) {
+                if (calledOff) {
+                    return;
+                }
+                LoadedClient c = clients.get(i);
                 log.log("Launching thread for client: \"" + c.className + "\"");
                 c.start(log, this, robots);
+                if (i + 1 < clients.size()) {
+                    clients.get(i + 1).prepare(log, this, robots);
+                }
                 long deadline = System.nanoTime() + (long) (config.connectTimeout * TimeUnit.SECONDS.toNanos(1));
                 if (!c.awaitReady(deadline)) {
                     log.log("client " + c.className + ": initialize() has not finished after " + config.connectTimeout
@@ -242,7 +263,9 @@ final class ClientLauncher implements LoadedClient.Listener {
             Thread.currentThread().interrupt();
             return;
         }
-        whenStarted.run();
+        if (!calledOff) {
+            whenStarted.run();
+        }
     }
 
     /** Connects the client through pipes; returns its session number. */

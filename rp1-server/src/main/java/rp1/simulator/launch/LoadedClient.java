@@ -8,6 +8,7 @@ import java.lang.reflect.Modifier;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import rp1.rossum.RsClient;
 import rp1.rossum.RsProtocol;
@@ -22,6 +23,10 @@ import rp1.simulator.net.InProcessClient;
  * Records whether it failed.
  */
 final class LoadedClient {
+    private static final int WAITING = 0;
+    private static final int RUNS = 1;
+    private static final int CALLED_OFF = 2;
+
     /** How a loaded client's thread ended, reported once. */
     interface Listener {
         /** {@code initialize()} threw: the client never ran. */
@@ -37,6 +42,10 @@ final class LoadedClient {
     final String className;
     final RsRunnable client;
     private final CountDownLatch initialized = new CountDownLatch(1);
+    /** Whether the client may run ({@link #RUNS}), is waiting its turn, or was called off before it ran. */
+    private final AtomicInteger turn = new AtomicInteger(WAITING);
+    /** Opened when the turn is decided: the client's thread, if it was prepared, waits for it. */
+    private final CountDownLatch decided = new CountDownLatch(1);
     private volatile InProcessClient link;
     /** Why the simulation cannot call the client's handlers directly, or null if it can. */
     private final String whyNotDirect;
@@ -160,17 +169,59 @@ final class LoadedClient {
     }
 
     /**
-     * Starts the client's thread in {@code group}: {@code initialize()}, then {@code run()} (for a
-     * direct client, only {@code initialize()}). The threads the client starts from it join the group.
+     * Lets the client run on its thread in {@code group} ({@link #prepare}d, or started now):
+     * {@code initialize()}, then {@code run()} (for a direct client, only {@code initialize()}). The
+     * threads the client starts from it join the group. Nothing, if the client was {@link #callOff called off}.
      */
     void start(ServerLog log, Listener listener, ThreadGroup group) {
-        Thread t = new Thread(group, () -> runClient(log, listener), "dlc " + className);
+        prepare(log, listener, group);
+        if (turn.compareAndSet(WAITING, RUNS)) {
+            decided.countDown();
+        }
+    }
+
+    /**
+     * Starts the client's thread in {@code group}, if it has none and was not called off, without
+     * letting it run the client: it waits for {@link #start}. The launcher prepares the next client's
+     * thread while the one before it initializes: starting a thread is work for the operating system,
+     * and done between one client's being ready and the next one's start, it was a third of the time
+     * 10,000 robots took to start (docs/performance.md).
+     */
+    void prepare(ServerLog log, Listener listener, ThreadGroup group) {
+        if (thread != null || turn.get() == CALLED_OFF) {
+            return;
+        }
+        Thread t = new Thread(group, () -> {
+            try {
+                decided.await();
+            } catch (InterruptedException e) {
+                // Ended before its turn (the run stopped): it never runs. Should its turn have come
+                // just then, the client starts with the interrupt that ended the run.
+                callOff();
+                Thread.currentThread().interrupt();
+            }
+            if (turn.get() == RUNS) {
+                runClient(log, listener);
+            }
+        }, "dlc " + className);
         t.setDaemon(true);
         thread = t;
         t.start();
     }
 
-    /** The client's thread (which may have ended), or null if it was never started. */
+    /**
+     * The run is stopping: a client still waiting its turn never runs, and its thread, if prepared,
+     * ends at once; one already let run is left to end with its session. Either way the launcher
+     * waits for it no longer.
+     */
+    void callOff() {
+        if (turn.compareAndSet(WAITING, CALLED_OFF)) {
+            decided.countDown();
+        }
+        initialized.countDown();
+    }
+
+    /** The client's thread (which may have ended, or be waiting its turn), or null if none was started. */
     Thread thread() {
         return thread;
     }
@@ -231,7 +282,8 @@ final class LoadedClient {
 
     /**
      * Waits until {@code initialize()} has returned (or failed) and, for an in-process client, the
-     * server has read everything it sent so far, at most until {@code deadlineNanos}.
+     * server has read everything it sent so far, at most until {@code deadlineNanos}, or until the
+     * client is {@linkplain #callOff called off}.
      *
      * @return whether the client got that far in time
      */

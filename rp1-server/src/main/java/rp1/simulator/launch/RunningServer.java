@@ -349,6 +349,7 @@ public final class RunningServer {
             log.important("Exit status " + ExitStatus.OUTPUT_FAILED + " (the run's output could not be written)");
         }
         parts.registry.closeAll("the server is shutting down");
+        parts.launcher.callOffWaiting();
         endClientThreads();
         Runtime rt = Runtime.getRuntime();
         log.raw("  Total Memory used by JVM: " + rt.totalMemory());

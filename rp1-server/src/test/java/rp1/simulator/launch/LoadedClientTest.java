@@ -79,6 +79,23 @@ class LoadedClientTest {
     }
 
     @Test
+    void aClientStillWaitingItsTurnWhenTheRunStopsIsNeverStarted() throws Exception {
+        // The first robot's initialize() hangs; the second waits for it, at most connectTimeout. The
+        // run is stopped meanwhile: the second must not be started on the stopped server afterwards.
+        SlowStartDlc.reset();
+        RunningServer server = TestServer.start(dir, "dlcEnabled=true",
+                "dlcName=" + SlowStartDlc.class.getName() + "," + TestDlc.class.getName(), "connectTimeout=1",
+                LOCKSTEP, "interlockEnabled=true", "enableNetworkClients=false");
+        assertTrue(SlowStartDlc.entered.await(10, TimeUnit.SECONDS), TestServer.log(dir));
+        server.stop();
+        Thread.sleep(1500);
+        assertFalse(TestDlc.CALLS.contains("initialize"), "started after the run stopped: " + TestDlc.CALLS
+                + "\n" + TestServer.log(dir));
+        String log = TestServer.log(dir);
+        assertFalse(log.contains("dlc " + TestDlc.class.getName()), "its thread had to be ended\n" + log);
+    }
+
+    @Test
     void aClientWhoseInitializeFailsStopsTheServerWithOneLineAndANonZeroStatus() throws Exception {
         int status = runToTheEnd("dlcEnabled=true", "dlcName=" + FailingDlc.class.getName());
         assertEquals(ExitStatus.CLIENT_FAILED, status);
