@@ -331,6 +331,8 @@ public final class RunningServer {
         }
         exitStatus = status;
         log.important("Shutting down simulator" + (status == ExitStatus.OK ? "" : " (exit status " + status + ")"));
+        // First, so that no client waiting its turn is started while the rest of the stop goes on.
+        parts.launcher.callOffWaiting();
         if (parts.listener != null) {
             parts.listener.close();
         }
@@ -349,7 +351,6 @@ public final class RunningServer {
             log.important("Exit status " + ExitStatus.OUTPUT_FAILED + " (the run's output could not be written)");
         }
         parts.registry.closeAll("the server is shutting down");
-        parts.launcher.callOffWaiting();
         endClientThreads();
         Runtime rt = Runtime.getRuntime();
         log.raw("  Total Memory used by JVM: " + rt.totalMemory());
