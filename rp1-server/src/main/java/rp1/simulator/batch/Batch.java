@@ -72,6 +72,12 @@ public final class Batch {
      * hangs until --timeout, does not hold every other job back for as long.
      */
     private static final long FIRST_RUN_ALONE_MILLIS = 1_000;
+    /**
+     * How long past a run's --timeout the sweep waits for a run to start or end before it takes its
+     * process for stuck, seconds: a run timed out is stopped as Ctrl-C would stop it, which takes a
+     * few seconds at most (the grace of its threads, a process killed).
+     */
+    static final double STUCK_AFTER_TIMEOUT_SECONDS = 60;
 
     private final SweepOptions options;
     private final Path out;
@@ -89,6 +95,10 @@ public final class Batch {
     private volatile boolean stopping;
     /** Set when a run found the output folder without its {@code sweep.ini}: removed or replaced meanwhile. */
     private volatile boolean outputLost;
+    /** When a run last started or ended, {@link System#nanoTime()}: a sweep with runs left and none for long is stuck. */
+    private volatile long lastProgress;
+    /** How long without a run starting or ending makes the sweep stuck, nanoseconds. */
+    private long stuckNanos;
 
     /**
      * One run of the sweep and the folder it runs in.
@@ -510,7 +520,9 @@ public final class Batch {
      * Runs every run not {@link #kept()}, {@code --jobs} at a time (the first alone for up to a
      * second if the engine {@linkplain RunEngine#firstRunWarmsUp() gains by it}), adding each one's rows to
      * {@code results.csv} as it ends; at the end rewrites {@code results.csv} in the order of the
-     * runs. Stops early, with every run that finished, if {@link #stop()} is called.
+     * runs. Stops early, with every run that finished, if {@link #stop()} is called; fails, with every
+     * run that finished in {@code results.csv}, if no run starts or ends for longer than a run can take
+     * ({@link #STUCK_AFTER_TIMEOUT_SECONDS} past --timeout, where the engine bounds its runs so).
      */
     public Result run(Progress progress) throws IOException, InterruptedException {
         Files.createDirectories(out.resolve("runs"));
@@ -535,7 +547,9 @@ public final class Batch {
                         }
                     }
                     futures.add(pool.submit(() -> {
+                        lastProgress = System.nanoTime();
                         Outcome o = stopping ? null : execute(r);
+                        lastProgress = System.nanoTime();
                         if (o != null) {
                             results.add(o);
                             finished.put(r.dir(), o);
@@ -545,8 +559,9 @@ public final class Batch {
                     }));
                 }
             }
+            lastProgress = System.nanoTime();
             for (Future<?> f : futures) {
-                f.get();
+                awaitUnlessStuck(f);
             }
             // Every run has ended. (If one could not be carried out, the others may still be going,
             // and the engine is left open: it is only memory and open jars until the JVM ends.)
@@ -570,6 +585,39 @@ public final class Batch {
         }
         ResultsCsv.write(out.resolve(RESULTS), variedKeys(), outcomes);
         return new Result(outcomes, outcomes.size() < runs.size());
+    }
+
+    /**
+     * Waits for a job, unless no run starts or ends for the longest a run can take (its --timeout,
+     * then its stop): then the process is stuck, a job's own thread lost (a robot filled the heap, and
+     * the JDK's code around the job failed for want of memory), and waiting on would wait for ever.
+     */
+    private void awaitUnlessStuck(Future<?> job) throws InterruptedException, ExecutionException, IOException {
+        while (true) {
+            try {
+                job.get(1, TimeUnit.SECONDS);
+                return;
+            } catch (TimeoutException notYet) {
+                if (engine.runsEndWithinTheirTimeout() && System.nanoTime() - lastProgress > stuckNanos()) {
+                    stop();
+                    throw new IOException(String.format(Locale.ROOT, "no run started or ended for %.0f s, longer than"
+                            + " a run can take (--timeout %.0f s, then its stop): the sweep's process is stuck (did a"
+                            + " robot fill its heap? --isolation process gives each run its own); the runs that finished"
+                            + " are in %s: add --resume to the same command to carry out the others",
+                            stuckNanos() / 1e9, options.timeoutSeconds, out.resolve(RESULTS)));
+                }
+            }
+        }
+    }
+
+    /** {@link #stuckNanos}: the run's --timeout and {@link #STUCK_AFTER_TIMEOUT_SECONDS}, unless a test set it. */
+    private long stuckNanos() {
+        return stuckNanos > 0 ? stuckNanos : (long) ((options.timeoutSeconds + STUCK_AFTER_TIMEOUT_SECONDS) * 1e9);
+    }
+
+    /** For tests: takes the sweep for stuck after {@code seconds} without a run starting or ending. */
+    void stuckAfter(double seconds) {
+        stuckNanos = (long) (seconds * 1e9);
     }
 
     /**

@@ -29,7 +29,7 @@ public final class Interruption {
 
     /**
      * A sweep's {@code main}: runs it with Ctrl-C and SIGTERM turned into an orderly stop, then ends
-     * the process with its status (1 if it failed with a defect).
+     * the process with its status (1 if it failed with a defect or an Error, with a line that says so).
      *
      * @param name  the command, for the message about a defect
      */
@@ -42,6 +42,12 @@ public final class Interruption {
         } catch (RuntimeException e) {
             // A defect, not a signal: leave at once rather than let the hook wait for a sweep that is gone.
             System.err.println(name + ": internal error: " + e);
+        } catch (Error e) {
+            // Out of memory on this thread (a robot filled the heap of a sweep's process): say so
+            // rather than end with no word. The runs that finished are in results.csv, and --resume
+            // carries out the others.
+            System.err.println(name + ": " + e + "; the sweep stops. The runs that finished are kept: add --resume to"
+                    + " the same command to carry out the others");
         } finally {
             interruption.exit(status);
         }

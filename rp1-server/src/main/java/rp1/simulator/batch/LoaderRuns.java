@@ -136,6 +136,7 @@ final class LoaderRuns implements RunEngine {
      * out again elsewhere with every run after them.
      */
     synchronized void memoryShort() {
+        letGoOfReserve();
         if (allElsewhere || other() == null) {
             return;
         }
@@ -156,6 +157,13 @@ final class LoaderRuns implements RunEngine {
     private boolean toBeRedone(RanHere here) {
         return !stopping && (here.stoppedShort() || here.ran().report().endReason().contains(OutOfMemoryError.class.getName()))
                 && other() != null;
+    }
+
+    /** Gives the runs' stops the memory the guard set aside for them. */
+    private synchronized void letGoOfReserve() {
+        if (memory != null) {
+            memory.letGoOfReserve();
+        }
     }
 
     /** Starts the guard with the first run (none where no run can go elsewhere). */
@@ -197,7 +205,18 @@ final class LoaderRuns implements RunEngine {
             return instead.run(run);
         }
         guardMemory();
-        RanHere here = runHere(run);
+        RanHere here;
+        try {
+            here = runHere(run);
+        } catch (OutOfMemoryError e) {
+            // This job's own thread found the heap full (a collector that lets it fill between two of
+            // the guard's looks): as if the guard had seen it, with this run among those going then.
+            if (stopping || elsewhere == null) {
+                throw e;
+            }
+            memoryShort();
+            here = new RanHere(null, true);
+        }
         if (!toBeRedone(here)) {
             return here.ran();
         }
@@ -242,6 +261,18 @@ final class LoaderRuns implements RunEngine {
             }
             RunningServer server = mine.get();
             return new RanHere(new Ran(report, here.trails()), server != null && stoppedShort.remove(server));
+        } catch (Error e) {
+            // This thread failed while the run went (out of memory): the run must not go on unwatched.
+            RunningServer server = mine.get();
+            if (server != null) {
+                try {
+                    letGoOfReserve();
+                    server.requestStop(ExitStatus.OK);
+                } catch (Error stillShort) {
+                    // No thread for its stop: its scheduler, short of memory too, stops it on its own thread.
+                }
+            }
+            throw e;
         } finally {
             thread.setContextClassLoader(before);
             if (mine.get() != null) {
@@ -300,5 +331,10 @@ final class LoaderRuns implements RunEngine {
         if (made != null) {
             made.stopAll();
         }
+    }
+
+    @Override
+    public boolean runsEndWithinTheirTimeout() {
+        return true;
     }
 }

@@ -18,7 +18,9 @@ import java.util.function.Consumer;
  * carried out where their memory is their own ({@link LoaderRuns}).
  *
  * <p>It looks every {@link #PERIOD_MILLIS} ms, on a thread of its own, at what the last collection
- * left of the heap, which the collector counts anyway. The management classes that read it take 30 ms
+ * left of the heap, which the collector counts anyway. A collector can let the heap fill between two
+ * looks (ZGC on a small heap); the guard's own thread then fails to allocate, lets go of a reserve it
+ * kept for this ({@link #reserveFor}) and tells as a look would have. The management classes that read it take 30 ms
  * to load, which a short sweep would feel at its start, so they are loaded after
  * {@link #LOAD_AFTER_MILLIS} ms or as soon as a quarter of the heap is in use, whichever comes first;
  * not later: on a heap that is full, the collector stops every thread for one full collection after
@@ -32,6 +34,9 @@ final class MemoryGuard<T> implements AutoCloseable {
     /** How long after it starts the guard looks at the collections whatever the heap's use, milliseconds. */
     private static final long LOAD_AFTER_MILLIS = 2_000;
     private static final long PERIOD_MILLIS = 50;
+    /** The share of the heap set aside while the guard looks, for the stops of the runs when it fills. */
+    private static final double RESERVE_SHARE = 1.0 / 32;
+    private static final int RESERVE_MOST = 4 << 20;
 
     /**
      * Held weakly: the guard stops once its owner is gone, so that a guard whose owner was never
@@ -41,6 +46,11 @@ final class MemoryGuard<T> implements AutoCloseable {
     private final Consumer<? super T> whenShort;
     private final Thread thread;
     private volatile boolean closed;
+    /**
+     * Memory set aside, let go when the heap fills all the same, so that the runs' stops (a thread
+     * each, log lines, closing files) find room instead of failing for want of it.
+     */
+    private volatile byte[] reserve;
 
     /**
      * Starts looking on behalf of {@code owner}: {@code whenShort} is given it once, on the guard's
@@ -59,6 +69,8 @@ final class MemoryGuard<T> implements AutoCloseable {
         long loadBy = System.nanoTime() + LOAD_AFTER_MILLIS * 1_000_000;
         List<MemoryPoolMXBean> oldest = null;
         try {
+            // Here rather than in the constructor: off the first run's way, on the other processor.
+            reserve = new byte[reserveFor(runtime.maxMemory())];
             while (!closed && owner.get() != null) {
                 Thread.sleep(PERIOD_MILLIS);
                 if (oldest == null) {
@@ -74,7 +86,25 @@ final class MemoryGuard<T> implements AutoCloseable {
             }
         } catch (InterruptedException e) {
             // Closed.
+        } catch (OutOfMemoryError e) {
+            // The heap filled between two looks: a collector that lets it fill faster than it is looked
+            // at (ZGC on a small heap). The reserve makes room for the runs' stops, then the owner is
+            // told as a look would have told it.
+            reserve = null;
+            if (!closed) {
+                told();
+            }
         }
+    }
+
+    /** Lets go of the memory set aside for the runs' stops: the heap filled, and they need it now. */
+    void letGoOfReserve() {
+        reserve = null;
+    }
+
+    /** {@link #RESERVE_SHARE} of a heap of {@code maxBytes}, at most {@link #RESERVE_MOST} bytes. */
+    static int reserveFor(long maxBytes) {
+        return (int) Math.min(RESERVE_MOST, Math.max(0, maxBytes) * RESERVE_SHARE);
     }
 
     /**

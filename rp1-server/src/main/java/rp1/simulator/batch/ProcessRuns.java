@@ -158,4 +158,9 @@ final class ProcessRuns implements RunEngine {
     private static RunReport report(Path dir, int status) {
         return RunReport.ofProcess(dir, dir.resolve(OUTPUT), status);
     }
+
+    @Override
+    public boolean runsEndWithinTheirTimeout() {
+        return true;
+    }
 }

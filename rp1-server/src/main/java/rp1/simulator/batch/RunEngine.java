@@ -37,6 +37,16 @@ public interface RunEngine extends AutoCloseable {
     }
 
     /**
+     * Whether every run the engine carries out ends within the sweep's --timeout and the few seconds
+     * of a stop once it has begun: true for runs in this process and in processes of their own, so
+     * that a sweep with no run starting or ending for longer takes its process for stuck instead of
+     * waiting for ever. Not for runs that may wait to begin (for a cluster's executors).
+     */
+    default boolean runsEndWithinTheirTimeout() {
+        return false;
+    }
+
+    /**
      * Releases what the engine kept for its runs (the loader the runs shared, and its open jars) once
      * no run is going or will start: a JVM that runs one sweep after another keeps nothing of the
      * ones that ended. Safe to call more than once.

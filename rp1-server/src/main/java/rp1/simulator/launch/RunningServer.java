@@ -41,6 +41,8 @@ public final class RunningServer {
     public static final String NOBODY_LEFT = "nobody-left";
     /** The stop reason while the server runs. */
     private static final String RUNNING = "running";
+    /** Made beforehand: the stop reason of a simulation that ran out of memory, when no other string can be made. */
+    private static final String OUT_OF_MEMORY = "the simulation failed: " + OutOfMemoryError.class.getName();
 
     private final Parts parts;
     private final Thread scheduler;
@@ -91,19 +93,38 @@ public final class RunningServer {
      * memory in a task) first stops the run with {@link ExitStatus#FATAL_ERROR} and a log line, so that
      * its files are closed and whoever waits for it (a sweep, whose other runs go on) learns at once
      * instead of waiting for a run that never ends; then it goes on up, to the process's handler
-     * ({@link FatalErrors} in a server of its own).
+     * ({@link FatalErrors} in a server of its own). With no memory left for a thread to stop it on,
+     * this thread stops it itself: it has nothing else left to do.
      */
     private void simulate() {
         try {
             parts.simulation.runPaused();
         } catch (Error e) {
+            String reason = failedBecause(e);
             try {
                 parts.log.important("The simulation failed and stops: " + e);
+            } catch (Error again) {
+                // Out of memory still: the stop below matters more than the line.
             } finally {
-                // Even if the log line could not be made (out of memory still).
-                requestStop(ExitStatus.FATAL_ERROR, "the simulation failed: " + e);
+                try {
+                    requestStop(ExitStatus.FATAL_ERROR, reason);
+                } catch (Error noThread) {
+                    stopHere(ExitStatus.FATAL_ERROR, reason);
+                }
             }
             throw e;
+        }
+    }
+
+    /**
+     * "the simulation failed: " and the error; the error's class alone when even that string cannot be
+     * made (a sweep tells a run that ran out of memory by its class's name in the reason).
+     */
+    private static String failedBecause(Error e) {
+        try {
+            return "the simulation failed: " + e;
+        } catch (Error again) {
+            return e instanceof OutOfMemoryError ? OUT_OF_MEMORY : "the simulation failed";
         }
     }
 
@@ -261,6 +282,14 @@ public final class RunningServer {
         }
     }
 
+    /** Stops the server on the calling thread, unless it is stopping already. */
+    private void stopHere(int status, String reason) {
+        if (stopping.compareAndSet(false, true)) {
+            stopReason = reason;
+            shutDown(status);
+        }
+    }
+
     /**
      * Stops the server because the process is exiting at a robot's call ({@link ExitCaller}): the run
      * failed, as if the robot had thrown, and says where it called; waits until the server has stopped.
@@ -310,9 +339,62 @@ public final class RunningServer {
         return exited.getCount() == 0;
     }
 
-    /** Closes everything, in the order that lets clients see an orderly end and the log record it. */
+    /**
+     * Closes everything, in the order that lets clients see an orderly end and the log record it. A
+     * step that fails (out of memory: a robot filled the heap) does not keep the others from being
+     * tried, and the server counts as stopped in the end whatever failed: a stop that hung half way
+     * would keep whoever waits for it (a sweep's job) waiting for ever, and the run's memory with it.
+     */
     private void shutDown(int status) {
         stopping.set(true);
+        exitStatus = status;
+        Throwable[] failed = new Throwable[1];
+        try {
+            attempt(failed, () -> exitStatus = finalStatus(status));
+            // First, so that no client waiting its turn is started while the rest of the stop goes on.
+            attempt(failed, parts.launcher::callOffWaiting);
+            if (parts.listener != null) {
+                attempt(failed, parts.listener::close);
+            }
+            // The scheduler stops first and the view closes while the clients are still connected, so
+            // the picture written at exit shows the robots where the run left them.
+            attempt(failed, parts.simulation::shutdown);
+            attempt(failed, this::joinScheduler);
+            attempt(failed, this::closeRecordsAndView);
+            attempt(failed, () -> parts.registry.closeAll("the server is shutting down"));
+            attempt(failed, this::endClientThreads);
+            if (failed[0] != null) {
+                exitStatus = ExitStatus.FATAL_ERROR;
+                attempt(new Throwable[1], () -> stopReason = stopReason + "; the stop failed: " + failed[0]);
+                attempt(new Throwable[1], () -> parts.log.important("The stop failed in part: " + failed[0]));
+            }
+            attempt(failed, () -> {
+                Runtime rt = Runtime.getRuntime();
+                parts.log.raw("  Total Memory used by JVM: " + rt.totalMemory());
+                parts.log.raw("  Free  Memory:             " + rt.freeMemory());
+            });
+            attempt(failed, parts.log::close);
+        } finally {
+            exited.countDown();
+        }
+    }
+
+    /** Runs one step of the stop; what it throws is kept in {@code failed[0]} (the first only) instead. */
+    private static void attempt(Throwable[] failed, Runnable step) {
+        try {
+            step.run();
+        } catch (RuntimeException | Error e) {
+            if (failed[0] == null) {
+                failed[0] = e;
+            }
+        }
+    }
+
+    /**
+     * The exit status of a stop asked for with {@code status}, with the log line that says why it
+     * differs: a run that went on past a failure did not go as asked, whatever ended it.
+     */
+    private int finalStatus(int status) {
         ServerLog log = parts.log;
         String taskFailure = parts.simulation.getTaskFailure();
         String clientFailure = parts.launcher.firstFailure();
@@ -329,34 +411,22 @@ public final class RunningServer {
             status = ExitStatus.CLIENT_FAILED;
             stopReason = "client failed: " + clientFailure;
         }
-        exitStatus = status;
         log.important("Shutting down simulator" + (status == ExitStatus.OK ? "" : " (exit status " + status + ")"));
-        // First, so that no client waiting its turn is started while the rest of the stop goes on.
-        parts.launcher.callOffWaiting();
-        if (parts.listener != null) {
-            parts.listener.close();
-        }
-        // The scheduler stops first and the view closes while the clients are still connected, so
-        // the picture written at exit shows the robots where the run left them.
-        parts.simulation.shutdown();
-        joinScheduler();
+        return status;
+    }
+
+    /** Finishes the records, then the view; a run whose output is not whole says so and exits with its status. */
+    private void closeRecordsAndView() {
         parts.records.close();
         List<String> outputFailures = new ArrayList<>(parts.records.failures());
         closeView(outputFailures);
         for (String failure : outputFailures) {
-            log.important("The run's output is not whole: " + failure);
+            parts.log.important("The run's output is not whole: " + failure);
         }
-        if (!outputFailures.isEmpty() && status == ExitStatus.OK) {
+        if (!outputFailures.isEmpty() && exitStatus == ExitStatus.OK) {
             exitStatus = ExitStatus.OUTPUT_FAILED;
-            log.important("Exit status " + ExitStatus.OUTPUT_FAILED + " (the run's output could not be written)");
+            parts.log.important("Exit status " + ExitStatus.OUTPUT_FAILED + " (the run's output could not be written)");
         }
-        parts.registry.closeAll("the server is shutting down");
-        endClientThreads();
-        Runtime rt = Runtime.getRuntime();
-        log.raw("  Total Memory used by JVM: " + rt.totalMemory());
-        log.raw("  Free  Memory:             " + rt.freeMemory());
-        log.close();
-        exited.countDown();
     }
 
     /**

@@ -124,6 +124,14 @@ class MemoryShortTest {
         assertFalse(MemoryGuard.isShort(1, 0), "no maximum known: never short");
     }
 
+    @Test
+    void theMemorySetAsideForTheRunsStopsIsAThirtySecondOfTheHeapAndAtMostFourMegabytes() {
+        assertEquals(2 << 20, MemoryGuard.reserveFor(64L << 20));
+        assertEquals(4 << 20, MemoryGuard.reserveFor(1L << 30));
+        assertEquals(4 << 20, MemoryGuard.reserveFor(Long.MAX_VALUE), "no maximum: the most");
+        assertEquals(0, MemoryGuard.reserveFor(0));
+    }
+
     /** The rows of a results.csv without their last column, wall_seconds, which no two sweeps share. */
     private static List<String> withoutWallTime(Path csv) throws Exception {
         List<String> rows = new ArrayList<>();
