@@ -14,12 +14,16 @@ public final class Interruption {
     public static final int STATUS = 130;
     /** How long the hook waits for the sweep to stop its runs and write its files. */
     private static final long FINISH_SECONDS = 120;
+    /** What {@link #runAndExit} sets aside, bytes: room for a line or two. */
+    private static final int RESERVE_BYTES = 256 << 10;
 
     private final CountDownLatch handedOver = new CountDownLatch(1);
     private boolean requested;
     private boolean exiting;
     private Runnable onStop = () -> { };
     private volatile int status = STATUS;
+    /** Memory set aside for the last line of a sweep that failed for want of it. */
+    private byte[] reserve = new byte[RESERVE_BYTES];
 
     /** A sweep's work, given the interruption that may stop it; answers the exit status. */
     @FunctionalInterface
@@ -46,6 +50,7 @@ public final class Interruption {
             // Out of memory on this thread (a robot filled the heap of a sweep's process): say so
             // rather than end with no word. The runs that finished are in results.csv, and --resume
             // carries out the others.
+            interruption.reserve = null;
             System.err.println(name + ": " + e + "; the sweep stops. The runs that finished are kept: add --resume to"
                     + " the same command to carry out the others");
         } finally {
