@@ -25,6 +25,7 @@ import java.util.Optional;
 import java.util.Properties;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -536,6 +537,7 @@ public final class Batch {
         ExecutorService pool = Executors.newFixedThreadPool(options.jobs);
         try (ResultsCsv results = ResultsCsv.start(out.resolve(RESULTS), variedKeys(), kept)) {
             List<Future<?>> futures = new ArrayList<>();
+            CountDownLatch jobsLeft = new CountDownLatch((int) runs.stream().filter(r -> !finished.containsKey(r.dir())).count());
             for (Run r : runs) {
                 if (!finished.containsKey(r.dir())) {
                     if (futures.size() == 1 && engine.firstRunWarmsUp()) {
@@ -547,24 +549,29 @@ public final class Batch {
                         }
                     }
                     futures.add(pool.submit(() -> {
-                        lastProgress = System.nanoTime();
-                        Outcome o = stopping ? null : execute(r);
-                        lastProgress = System.nanoTime();
-                        if (o != null) {
-                            results.add(o);
-                            finished.put(r.dir(), o);
-                            progress.finished(o);
+                        try {
+                            lastProgress = System.nanoTime();
+                            Outcome o = stopping ? null : execute(r);
+                            lastProgress = System.nanoTime();
+                            if (o != null) {
+                                results.add(o);
+                                finished.put(r.dir(), o);
+                                progress.finished(o);
+                            }
+                            return null;
+                        } finally {
+                            jobsLeft.countDown();
                         }
-                        return null;
                     }));
                 }
             }
             lastProgress = System.nanoTime();
+            awaitUnlessStuck(jobsLeft);
             for (Future<?> f : futures) {
-                awaitUnlessStuck(f);
+                f.get();
             }
-            // Every run has ended. (If one could not be carried out, the others may still be going,
-            // and the engine is left open: it is only memory and open jars until the JVM ends.)
+            // Every run has ended. (If one could not be carried out, the engine is left open: it is
+            // only memory and open jars until the JVM ends.)
             engine.close();
         } catch (ExecutionException e) {
             throw new IOException("a run could not be carried out: " + e.getCause(), e.getCause());
@@ -588,25 +595,33 @@ public final class Batch {
     }
 
     /**
-     * Waits for a job, unless no run starts or ends for the longest a run can take (its --timeout,
-     * then its stop): then the process is stuck, a job's own thread lost (a robot filled the heap, and
-     * the JDK's code around the job failed for want of memory), and waiting on would wait for ever.
+     * Waits for the jobs to end, unless no run starts or ends for the longest a run can take (its
+     * --timeout, then its stop): then the process is stuck, a job's own thread lost (a robot filled the
+     * heap, and the JDK's code around the job failed for want of memory), and waiting on would wait for
+     * ever. The wait allocates next to nothing, and a look that finds no memory looks again: this is the
+     * thread that must still be there when the heap is full.
      */
-    private void awaitUnlessStuck(Future<?> job) throws InterruptedException, ExecutionException, IOException {
-        while (true) {
-            try {
-                job.get(1, TimeUnit.SECONDS);
-                return;
-            } catch (TimeoutException notYet) {
-                if (engine.runsEndWithinTheirTimeout() && System.nanoTime() - lastProgress > stuckNanos()) {
-                    stop();
-                    throw new IOException(String.format(Locale.ROOT, "no run started or ended for %.0f s, longer than"
-                            + " a run can take (--timeout %.0f s, then its stop): the sweep's process is stuck (did a"
-                            + " robot fill its heap? --isolation process gives each run its own); the runs that finished"
-                            + " are in %s: add --resume to the same command to carry out the others",
-                            stuckNanos() / 1e9, options.timeoutSeconds, out.resolve(RESULTS)));
-                }
+    private void awaitUnlessStuck(CountDownLatch jobsLeft) throws InterruptedException, IOException {
+        while (!endedWithin(jobsLeft, 1)) {
+            if (engine.runsEndWithinTheirTimeout() && System.nanoTime() - lastProgress > stuckNanos()) {
+                stop();
+                throw new IOException(String.format(Locale.ROOT, "no run started or ended for %.0f s, longer than"
+                        + " a run can take (--timeout %.0f s, then its stop): the sweep's process is stuck (did a"
+                        + " robot fill its heap? --isolation process gives each run its own); the runs that finished"
+                        + " are in %s: add --resume to the same command to carry out the others",
+                        stuckNanos() / 1e9, options.timeoutSeconds, out.resolve(RESULTS)));
             }
+        }
+    }
+
+    /** Whether the jobs all ended within {@code seconds}; false also if the heap had no room for the wait. */
+    private static boolean endedWithin(CountDownLatch jobsLeft, long seconds) throws InterruptedException {
+        try {
+            return jobsLeft.await(seconds, TimeUnit.SECONDS);
+        } catch (OutOfMemoryError e) {
+            // Its queue's node: a job's stop is making room meanwhile.
+            Thread.sleep(10);
+            return jobsLeft.getCount() == 0;
         }
     }
 
