@@ -666,6 +666,12 @@ public final class Batch {
         } catch (IOException e) {
             ran = new RunEngine.Ran(RunReport.failed(RunReport.NOT_STARTED + e.getMessage(),
                     ExitStatus.STARTUP_FAILED), List.of());
+        } catch (OutOfMemoryError e) {
+            // The job's thread found the heap full where the engine could not carry the run out again
+            // elsewhere (a robot filled it): a row that says so, which --resume runs again, rather than
+            // a sweep that fails with the runs after it never started.
+            ran = new RunEngine.Ran(RunReport.failed(RunReport.NOT_STARTED + "the sweep's process ran out of memory ("
+                    + e + ")", ExitStatus.STARTUP_FAILED), List.of());
         }
         RunReport report = ran.report();
         if (stopping && (report.endReason().equals("stopped") || Double.isNaN(report.endTime()))) {

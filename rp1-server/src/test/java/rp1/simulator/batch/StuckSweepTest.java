@@ -19,10 +19,11 @@ import org.junit.jupiter.api.io.TempDir;
 import rp1.Sweep;
 
 /**
- * A sweep whose job never comes back (its thread lost in the JDK's code when a robot filled the heap
- * of the sweep's process) does not wait for it for ever: once no run has started or ended for longer
- * than a run can take, the sweep stops with a line that says so, and keeps the runs that finished for
- * --resume.
+ * When a robot fills the heap of the sweep's process, a job may fail for want of memory, or its thread
+ * may be lost in the JDK's code and never come back. Neither stops the sweep's other runs for good nor
+ * makes it wait for ever: a job that failed is a row that says so, and once no run has started or
+ * ended for longer than a run can take, the sweep stops with a line that says so. Either way the runs
+ * that finished are kept, and --resume carries out the others.
  */
 @Timeout(120)
 class StuckSweepTest {
@@ -62,9 +63,62 @@ class StuckSweepTest {
         }
     }
 
+    @Test
+    void aJobThatRanOutOfMemoryIsARowThatResumeRunsAgain() throws Exception {
+        Path properties = HomeSweep.properties(dir, "experiment", ExperimentDlc.class);
+        String out = dir.resolve("out").toString();
+        RunEngine.Factory shortAtSeed3 = batch -> new Short(RunEngine.inThisProcess(List.of(ExperimentDlc.class.getName()),
+                StuckSweepTest.class.getClassLoader(), 60), 3);
+        ByteArrayOutputStream said = new ByteArrayOutputStream();
+        int status = sweep(said, shortAtSeed3, "-p", properties.toString(), "--seeds", "1-4", "--jobs", "2", "--out", out);
+        String printed = said.toString(StandardCharsets.UTF_8);
+        assertEquals(Sweep.RUN_FAILED, status, printed);
+        assertTrue(printed.contains("3 runs ended as asked, 1 failed"), "the runs after it went on: " + printed);
+        assertTrue(printed.contains("was never carried out") && printed.contains("add --resume"), printed);
+        String row = Files.readAllLines(dir.resolve("out/results.csv")).stream().filter(r -> r.startsWith("3,"))
+                .findFirst().orElseThrow();
+        assertTrue(row.contains("the run could not be started: the sweep's process ran out of memory"
+                + " (java.lang.OutOfMemoryError: made up by the test)"), row);
+
+        ByteArrayOutputStream resumed = new ByteArrayOutputStream();
+        assertEquals(0, sweep(resumed, null, "-p", properties.toString(), "--seeds", "1-4", "--jobs", "2", "--out", out,
+                "--resume"), resumed.toString(StandardCharsets.UTF_8));
+        assertTrue(resumed.toString(StandardCharsets.UTF_8).contains("3 finished before, 1 to run"),
+                resumed.toString(StandardCharsets.UTF_8));
+    }
+
     private static int sweep(ByteArrayOutputStream said, RunEngine.Factory engines, String... args) {
         PrintStream to = new PrintStream(said, true, StandardCharsets.UTF_8);
         return Sweep.run(args, to, to, false, new Interruption(), engines);
+    }
+
+    /** Carries out runs with another engine, except that the job of one seed runs out of memory. */
+    private static final class Short implements RunEngine {
+        private final RunEngine engine;
+        private final long shortSeed;
+
+        Short(RunEngine engine, long shortSeed) {
+            this.engine = engine;
+            this.shortSeed = shortSeed;
+        }
+
+        @Override
+        public Ran run(Batch.Run run) throws IOException, InterruptedException {
+            if (run.seed() == shortSeed) {
+                throw new OutOfMemoryError("made up by the test");
+            }
+            return engine.run(run);
+        }
+
+        @Override
+        public void stopAll() {
+            engine.stopAll();
+        }
+
+        @Override
+        public void close() {
+            engine.close();
+        }
     }
 
     /** Carries out runs with another engine, except that the run of one seed never comes back, whatever it is told. */
