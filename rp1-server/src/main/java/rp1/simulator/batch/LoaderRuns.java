@@ -277,6 +277,9 @@ final class LoaderRuns implements RunEngine {
             thread.setContextClassLoader(before);
             if (mine.get() != null) {
                 running.remove(mine.get());
+                // Already gone when the run returned its report; not if this thread failed: the run,
+                // and the memory its robot keeps, must not stay reachable from here.
+                stoppedShort.remove(mine.get());
             }
             if (loader != shared) {
                 loader.close();
