@@ -26,12 +26,10 @@ import java.util.Properties;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
@@ -536,19 +534,20 @@ public final class Batch {
         kept.forEach(o -> finished.put(o.run().dir(), o));
         ExecutorService pool = Executors.newFixedThreadPool(options.jobs);
         try (ResultsCsv results = ResultsCsv.start(out.resolve(RESULTS), variedKeys(), kept)) {
-            List<Future<?>> futures = new ArrayList<>();
             CountDownLatch jobsLeft = new CountDownLatch((int) runs.stream().filter(r -> !finished.containsKey(r.dir())).count());
+            CountDownLatch firstEnded = new CountDownLatch(1);
+            // What a job failed with, the first: kept rather than thrown, so that learning of it, and
+            // waiting for the jobs, allocates nothing while a robot may have filled the heap.
+            AtomicReference<Throwable> failed = new AtomicReference<>();
+            int submitted = 0;
             for (Run r : runs) {
                 if (!finished.containsKey(r.dir())) {
-                    if (futures.size() == 1 && engine.firstRunWarmsUp()) {
+                    if (submitted == 1 && engine.firstRunWarmsUp()) {
                         // Two cold bumper runs at once took 0.43 s each; the first alone 0.19 s.
-                        try {
-                            futures.get(0).get(FIRST_RUN_ALONE_MILLIS, TimeUnit.MILLISECONDS);
-                        } catch (TimeoutException stillGoing) {
-                            // Warm by now: the others start beside it.
-                        }
+                        firstEnded.await(FIRST_RUN_ALONE_MILLIS, TimeUnit.MILLISECONDS);
                     }
-                    futures.add(pool.submit(() -> {
+                    CountDownLatch ended = submitted++ == 0 ? firstEnded : null;
+                    pool.execute(() -> {
                         try {
                             lastProgress = System.nanoTime();
                             Outcome o = stopping ? null : execute(r);
@@ -558,23 +557,25 @@ public final class Batch {
                                 finished.put(r.dir(), o);
                                 progress.finished(o);
                             }
-                            return null;
+                        } catch (Throwable t) {
+                            failed.compareAndSet(null, t);
                         } finally {
+                            if (ended != null) {
+                                ended.countDown();
+                            }
                             jobsLeft.countDown();
                         }
-                    }));
+                    });
                 }
             }
             lastProgress = System.nanoTime();
             awaitUnlessStuck(jobsLeft);
-            for (Future<?> f : futures) {
-                f.get();
+            if (failed.get() != null) {
+                throw new IOException("a run could not be carried out: " + failed.get(), failed.get());
             }
             // Every run has ended. (If one could not be carried out, the engine is left open: it is
             // only memory and open jars until the JVM ends.)
             engine.close();
-        } catch (ExecutionException e) {
-            throw new IOException("a run could not be carried out: " + e.getCause(), e.getCause());
         } finally {
             pool.shutdownNow();
             progress.close();

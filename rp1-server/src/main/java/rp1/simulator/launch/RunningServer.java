@@ -36,17 +36,23 @@ public final class RunningServer {
      * loaded clients' threads to end, before it ends them ({@link StuckThreads}).
      */
     private static final long GRACE_MILLIS = 2000;
+    /** How long {@link #stop()} waits for the thread it handed the stop to, before doing it itself. */
+    private static final long STOP_BEGINS_MILLIS = 1000;
 
     /** The stop reason of a max-speed run that every client and robot has left ({@link #endWhenDeserted}). */
     public static final String NOBODY_LEFT = "nobody-left";
-    /** The stop reason while the server runs. */
-    private static final String RUNNING = "running";
+    /** The stop reason while the server runs ({@link #getStopReason()}). */
+    public static final String RUNNING = "running";
     /** Made beforehand: the stop reason of a simulation that ran out of memory, when no other string can be made. */
     private static final String OUT_OF_MEMORY = "the simulation failed: " + OutOfMemoryError.class.getName();
 
     private final Parts parts;
     private final Thread scheduler;
     private final AtomicBoolean stopping = new AtomicBoolean();
+    /** Set as {@link #shutDown} begins: it runs once, on whichever thread gets there first. */
+    private final AtomicBoolean shutDownBegun = new AtomicBoolean();
+    /** The status the first stop request asked for, for a caller of {@link #stop()} that takes the stop over. */
+    private volatile int requestedStatus = ExitStatus.OK;
     private final CountDownLatch exited = new CountDownLatch(1);
     private volatile int exitStatus = ExitStatus.OK;
     private volatile String stopReason = RUNNING;
@@ -271,6 +277,7 @@ public final class RunningServer {
             return;
         }
         stopReason = reason;
+        requestedStatus = status;
         try {
             parts.helpers.start("shutdown", false, () -> shutDown(status));
         } catch (RuntimeException | Error e) {
@@ -309,6 +316,11 @@ public final class RunningServer {
      */
     public int stop() throws InterruptedException {
         requestStop(ExitStatus.OK);
+        if (awaitExit(STOP_BEGINS_MILLIS, TimeUnit.MILLISECONDS).isEmpty() && !shutDownBegun.get()) {
+            // The stop was handed to a thread that ended before it began (out of memory): none would
+            // ever come, so the caller stops the server itself.
+            shutDown(requestedStatus);
+        }
         return awaitExit();
     }
 
@@ -346,6 +358,9 @@ public final class RunningServer {
      * would keep whoever waits for it (a sweep's job) waiting for ever, and the run's memory with it.
      */
     private void shutDown(int status) {
+        if (!shutDownBegun.compareAndSet(false, true)) {
+            return;
+        }
         stopping.set(true);
         exitStatus = status;
         Throwable[] failed = new Throwable[1];

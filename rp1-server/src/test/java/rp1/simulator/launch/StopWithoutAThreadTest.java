@@ -16,9 +16,10 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A stop that could not get a thread (the process out of memory or of threads just then) is not taken
  * for a stop under way: the next request stops the server, instead of waiting for ever for a stop
- * that never began (a sweep's run then never ended). Nor does a stop that fails half way, or a
- * simulation that fails with no thread to stop it on, leave whoever waits for the run waiting: in a
- * sweep's process whose heap a robot filled, each of these hung the sweep.
+ * that never began (a sweep's run then never ended). Nor does a stop whose thread never runs it, a
+ * stop that fails half way, or a simulation that fails with no thread to stop it on, leave whoever
+ * waits for the run waiting: in a sweep's process whose heap a robot filled, each of these hung the
+ * sweep.
  */
 @Timeout(60)
 class StopWithoutAThreadTest {
@@ -43,6 +44,25 @@ class StopWithoutAThreadTest {
         assertTrue(server.awaitExit(200, TimeUnit.MILLISECONDS).isEmpty(), "nothing stopped it yet");
         assertEquals(ExitStatus.OK, server.stop());
         assertEquals("stopped", server.getStopReason());
+    }
+
+    @Test
+    void aStopHandedToAThreadThatNeverRunsItIsDoneByTheCallerOfStop() throws Exception {
+        TestServer.write(dir, "simulationSpeed=1", "waitForClients=0");
+        HelperThreads threads = HelperThreads.newThreads();
+        // As a kept thread that takes the stop and dies before it begins it (out of memory).
+        HelperThreads losingTheStop = (name, daemon, task) -> {
+            if (!name.equals("shutdown")) {
+                threads.start(name, daemon, task);
+            }
+        };
+        RunningServer server = ServerLauncher.start(new String[] {"-p", TestServer.PROPERTIES}, dir,
+                LaunchOptions.defaults().withPort(0).withHelperThreads(losingTheStop));
+        server.requestStop(ExitStatus.OK);
+        assertTrue(server.awaitExit(200, TimeUnit.MILLISECONDS).isEmpty(), "the stop was lost");
+        assertEquals(ExitStatus.OK, server.stop());
+        assertEquals("stopped", server.getStopReason());
+        assertTrue(TestServer.log(dir).contains("Shutting down simulator"), TestServer.log(dir));
     }
 
     @Test
