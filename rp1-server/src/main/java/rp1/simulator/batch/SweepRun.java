@@ -179,20 +179,11 @@ public final class SweepRun {
     private static OptionalInt awaitExit(RunningServer server, ExternalClient external, long deadline)
             throws InterruptedException {
         long clientGone = Long.MAX_VALUE;
-        long stopSeen = Long.MAX_VALUE;
         while (System.nanoTime() < deadline) {
-            long wait = Math.min(deadline - System.nanoTime(), POLL_NANOS);
+            long wait = Math.min(deadline - System.nanoTime(), external == null ? Long.MAX_VALUE : POLL_NANOS);
             OptionalInt status = server.awaitExit(wait, TimeUnit.NANOSECONDS);
             if (status.isPresent()) {
                 return status;
-            }
-            if (!server.getStopReason().equals(RunningServer.RUNNING)) {
-                // Asked to stop (the sweep ran short of memory) and not stopped yet: if the thread the
-                // stop was handed to died before it began, stop() does it here rather than at --timeout.
-                stopSeen = Math.min(stopSeen, System.nanoTime());
-                if (System.nanoTime() - stopSeen > POLL_NANOS) {
-                    return OptionalInt.of(server.stop());
-                }
             }
             if (external != null && external.hasExited()) {
                 external.seenEndedBeforeTheRun();

@@ -36,13 +36,13 @@ public final class RunningServer {
      * loaded clients' threads to end, before it ends them ({@link StuckThreads}).
      */
     private static final long GRACE_MILLIS = 2000;
-    /** How long {@link #stop()} waits for the thread it handed the stop to, before doing it itself. */
-    private static final long STOP_BEGINS_MILLIS = 1000;
+    /** How long a thread waiting for the server waits for the thread the stop was handed to, before doing it itself. */
+    private static final long STOP_BEGINS_NANOS = TimeUnit.SECONDS.toNanos(1);
 
     /** The stop reason of a max-speed run that every client and robot has left ({@link #endWhenDeserted}). */
     public static final String NOBODY_LEFT = "nobody-left";
-    /** The stop reason while the server runs ({@link #getStopReason()}). */
-    public static final String RUNNING = "running";
+    /** The stop reason while the server runs. */
+    private static final String RUNNING = "running";
     /** Made beforehand: the stop reason of a simulation that ran out of memory, when no other string can be made. */
     private static final String OUT_OF_MEMORY = "the simulation failed: " + OutOfMemoryError.class.getName();
 
@@ -51,8 +51,10 @@ public final class RunningServer {
     private final AtomicBoolean stopping = new AtomicBoolean();
     /** Set as {@link #shutDown} begins: it runs once, on whichever thread gets there first. */
     private final AtomicBoolean shutDownBegun = new AtomicBoolean();
-    /** The status the first stop request asked for, for a caller of {@link #stop()} that takes the stop over. */
+    /** The status the first stop request asked for, for a waiting thread that takes the stop over. */
     private volatile int requestedStatus = ExitStatus.OK;
+    /** When the stop was handed to a thread ({@link System#nanoTime()}); 0 while none was. */
+    private volatile long stopHandedAt;
     private final CountDownLatch exited = new CountDownLatch(1);
     private volatile int exitStatus = ExitStatus.OK;
     private volatile String stopReason = RUNNING;
@@ -280,6 +282,7 @@ public final class RunningServer {
         requestedStatus = status;
         try {
             parts.helpers.start("shutdown", false, () -> shutDown(status));
+            stopHandedAt = System.nanoTime();
         } catch (RuntimeException | Error e) {
             // No thread for the stop (out of memory, out of threads): the next request tries again,
             // instead of finding the server stopping and waiting for a stop that never began.
@@ -316,23 +319,42 @@ public final class RunningServer {
      */
     public int stop() throws InterruptedException {
         requestStop(ExitStatus.OK);
-        if (awaitExit(STOP_BEGINS_MILLIS, TimeUnit.MILLISECONDS).isEmpty() && !shutDownBegun.get()) {
-            // The stop was handed to a thread that ended before it began (out of memory): none would
-            // ever come, so the caller stops the server itself.
-            shutDown(requestedStatus);
-        }
         return awaitExit();
     }
 
     /** Waits until the server has stopped; returns the exit status. */
     public int awaitExit() throws InterruptedException {
-        exited.await();
+        while (!exited.await(STOP_BEGINS_NANOS, TimeUnit.NANOSECONDS)) {
+            takeOverLostStop();
+        }
         return exitStatus;
     }
 
     /** Waits at most {@code timeout}; the exit status if the server stopped by then. */
     public OptionalInt awaitExit(long timeout, TimeUnit unit) throws InterruptedException {
-        return exited.await(timeout, unit) ? OptionalInt.of(exitStatus) : OptionalInt.empty();
+        long left = unit.toNanos(timeout);
+        while (left > 0) {
+            long slice = Math.min(left, STOP_BEGINS_NANOS);
+            long before = System.nanoTime();
+            if (exited.await(slice, TimeUnit.NANOSECONDS)) {
+                break;
+            }
+            takeOverLostStop();
+            left -= System.nanoTime() - before;
+        }
+        return hasExited() ? OptionalInt.of(exitStatus) : OptionalInt.empty();
+    }
+
+    /**
+     * A stop handed to a thread that has not begun it a second later (the thread ended first: out of
+     * memory) would never come: a thread waiting for the server does it instead, so that whoever waits
+     * for a run (a sweep's job) never waits for ever.
+     */
+    private void takeOverLostStop() {
+        long handed = stopHandedAt;
+        if (handed != 0 && !shutDownBegun.get() && System.nanoTime() - handed > STOP_BEGINS_NANOS) {
+            shutDown(requestedStatus);
+        }
     }
 
     /**
@@ -363,45 +385,52 @@ public final class RunningServer {
         }
         stopping.set(true);
         exitStatus = status;
-        Throwable[] failed = new Throwable[1];
         try {
-            attempt(failed, () -> exitStatus = finalStatus(status));
-            // First, so that no client waiting its turn is started while the rest of the stop goes on.
-            attempt(failed, parts.launcher::callOffWaiting);
-            if (parts.listener != null) {
-                attempt(failed, parts.listener::close);
+            List<Runnable> steps = List.of(
+                    () -> exitStatus = finalStatus(status),
+                    // First, so that no client waiting its turn is started while the rest of the stop goes on.
+                    parts.launcher::callOffWaiting,
+                    () -> {
+                        if (parts.listener != null) {
+                            parts.listener.close();
+                        }
+                    },
+                    // The scheduler stops first and the view closes while the clients are still connected,
+                    // so the picture written at exit shows the robots where the run left them.
+                    parts.simulation::shutdown,
+                    this::joinScheduler,
+                    this::closeRecordsAndView,
+                    () -> parts.registry.closeAll("the server is shutting down"),
+                    this::endClientThreads);
+            Throwable failed = null;
+            for (Runnable step : steps) {
+                Throwable t = attempt(step);
+                failed = failed != null ? failed : t;
             }
-            // The scheduler stops first and the view closes while the clients are still connected, so
-            // the picture written at exit shows the robots where the run left them.
-            attempt(failed, parts.simulation::shutdown);
-            attempt(failed, this::joinScheduler);
-            attempt(failed, this::closeRecordsAndView);
-            attempt(failed, () -> parts.registry.closeAll("the server is shutting down"));
-            attempt(failed, this::endClientThreads);
-            if (failed[0] != null) {
+            if (failed != null) {
+                Throwable first = failed;
                 exitStatus = ExitStatus.FATAL_ERROR;
-                attempt(new Throwable[1], () -> stopReason = stopReason + "; the stop failed: " + failed[0]);
-                attempt(new Throwable[1], () -> parts.log.important("The stop failed in part: " + failed[0]));
+                attempt(() -> stopReason = stopReason + "; the stop failed: " + first);
+                attempt(() -> parts.log.important("The stop failed in part: " + first));
             }
-            attempt(failed, () -> {
+            attempt(() -> {
                 Runtime rt = Runtime.getRuntime();
                 parts.log.raw("  Total Memory used by JVM: " + rt.totalMemory());
                 parts.log.raw("  Free  Memory:             " + rt.freeMemory());
             });
-            attempt(failed, parts.log::close);
+            attempt(parts.log::close);
         } finally {
             exited.countDown();
         }
     }
 
-    /** Runs one step of the stop; what it throws is kept in {@code failed[0]} (the first only) instead. */
-    private static void attempt(Throwable[] failed, Runnable step) {
+    /** Runs one step of the stop; returns what it threw instead of throwing it, or null. */
+    private static Throwable attempt(Runnable step) {
         try {
             step.run();
+            return null;
         } catch (RuntimeException | Error e) {
-            if (failed[0] == null) {
-                failed[0] = e;
-            }
+            return e;
         }
     }
 
