@@ -3,6 +3,7 @@ package rp1;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -57,9 +58,18 @@ final class SweepSummary {
                     trails(outcomes, c, varied)));
         }
         List<BoxPlot.Metric> metrics = new ArrayList<>();
+        // Loops rather than streams here and below: each stream's lambdas are linked on first use, and
+        // this runs once, after the last run, where the sweep waits for the picture.
+        Set<String> results = new LinkedHashSet<>();
+        for (Batch.Outcome o : outcomes) {
+            for (RobotResult r : o.report().robots()) {
+                results.addAll(r.results().keySet());
+            }
+        }
         List<String> names = new ArrayList<>(METRICS.keySet());
-        outcomes.stream().flatMap(o -> o.report().robots().stream()).flatMap(r -> r.results().keySet().stream())
-                .distinct().forEach(n -> names.add(ResultsCsv.RESULT_PREFIX + n));
+        for (String n : results) {
+            names.add(ResultsCsv.RESULT_PREFIX + n);
+        }
         for (String name : names) {
             List<BoxPlot.Box> boxes = new ArrayList<>();
             for (int i = 0; i < drawn.size(); i++) {
@@ -78,7 +88,9 @@ final class SweepSummary {
             for (RobotResult r : o.report().robots()) {
                 if (!r.name().isEmpty()) {
                     Map<String, String> c = new LinkedHashMap<>();
-                    varied.forEach(k -> c.put(k, o.run().configuration().get(k)));
+                    for (String k : varied) {
+                        c.put(k, o.run().configuration().get(k));
+                    }
                     c.put("plan", o.run().plan());
                     c.put("robot", r.name());
                     seen.add(c);
@@ -90,7 +102,9 @@ final class SweepSummary {
 
     private static List<String> describe(Map<String, String> c, List<String> varied) {
         List<String> words = new ArrayList<>();
-        varied.forEach(k -> words.add(k + "=" + c.get(k)));
+        for (String k : varied) {
+            words.add(k + "=" + c.get(k));
+        }
         words.add(Path.of(c.get("plan")).getFileName().toString());
         words.add(c.get("robot"));
         return words;
@@ -131,7 +145,8 @@ final class SweepSummary {
 
     private static double[] values(List<Batch.Outcome> outcomes, Map<String, String> c, List<String> varied,
                                    String metric) {
-        List<Double> values = new ArrayList<>();
+        double[] values = new double[outcomes.size()];
+        int n = 0;
         for (Batch.Outcome o : outcomes) {
             if (!o.report().succeeded()) {
                 continue; // as in summary.csv: a failed run's numbers are of a run that did not go as asked
@@ -140,12 +155,15 @@ final class SweepSummary {
                 if (in(o, r.name(), c, varied)) {
                     double v = value(r, metric);
                     if (!Double.isNaN(v)) {
-                        values.add(v);
+                        if (n == values.length) {
+                            values = Arrays.copyOf(values, Math.max(1, 2 * n));
+                        }
+                        values[n++] = v;
                     }
                 }
             }
         }
-        return values.stream().mapToDouble(Double::doubleValue).toArray();
+        return Arrays.copyOf(values, n);
     }
 
     private static double value(RobotResult r, String metric) {

@@ -59,13 +59,8 @@ public final class PngEncoder {
             int[] pixels = packed(image);
             byte[] row = new byte[1 + 3 * width];
             row[0] = NO_FILTER;
-            for (int y = 0, i = 0; y < height; y++) {
-                for (int o = 1; o < row.length; o += 3, i++) {
-                    int p = pixels[i];
-                    row[o] = (byte) (p >> 16);
-                    row[o + 1] = (byte) (p >> 8);
-                    row[o + 2] = (byte) p;
-                }
+            for (int y = 0; y < height; y++) {
+                unpack(pixels, y * width, row);
                 z.write(row);
             }
         } finally {
@@ -73,6 +68,20 @@ public final class PngEncoder {
         }
         chunk(out, "IDAT", compressed.toByteArray(), compressed.size());
         chunk(out, "IEND", new byte[0], 0);
+    }
+
+    /**
+     * Puts the row of pixels from {@code pixels[from]} into {@code row} after its filter byte, as R, G, B
+     * bytes. A method of its own so that the compiler takes it up after a few rows (a loop over the
+     * whole picture in one call would run in the interpreter until the compiler replaced it mid-loop).
+     */
+    private static void unpack(int[] pixels, int from, byte[] row) {
+        for (int o = 1, i = from; o < row.length; o += 3, i++) {
+            int p = pixels[i];
+            row[o] = (byte) (p >> 16);
+            row[o + 1] = (byte) (p >> 8);
+            row[o + 2] = (byte) p;
+        }
     }
 
     /**

@@ -7,7 +7,6 @@ import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.geom.Ellipse2D;
-import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -30,6 +29,8 @@ public final class SweepPicture {
     private static final int TITLE = 20;
     private static final float TRAIL_WIDTH = 1.6f;
     private static final double MARK = 8.0;
+    /** How wide a start's ring is drawn, pixels. */
+    private static final double MARK_LINE = 1.5;
     private static final int KEY_HEIGHT = 18;
 
     /** Where one run's robots went, started and ended, in world metres: pieces {@code x0, y0, x1, y1, ...}, points {@code x, y}. */
@@ -69,23 +70,19 @@ public final class SweepPicture {
      * compiles a great deal (fonts, the rasterizer, the encoder). A sweep calls this on a thread of its
      * own from its start, while it is prepared and its first runs compute, so that its summary picture
      * at the end does not wait for that (and the plan parser finds {@code java.awt.Color}, whose first
-     * use loads the AWT library, loaded).
+     * use loads the AWT library, loaded). The trails and marks, painted by {@link TrailCanvas}, are
+     * painted enough times for its loops to be compiled.
      */
     public static void warmUp() {
-        BufferedImage image = new BufferedImage(96, 48, BufferedImage.TYPE_INT_RGB);
+        BufferedImage image = new BufferedImage(96, 64, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             g.setColor(Color.white);
-            g.fillRect(0, 0, 96, 48);
-            g.setStroke(new BasicStroke(TRAIL_WIDTH, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+            g.fillRect(0, 0, 96, 64);
             g.setColor(colour(1));
-            Path2D.Double path = new Path2D.Double();
-            path.moveTo(2.5, 3.5);
-            path.lineTo(60.25, 40.75);
-            path.lineTo(90.5, 10.25);
-            g.draw(path);
+            g.draw(circle(60, 20));
             g.fill(circle(20, 20));
             g.drawString("0.5 m", 10, g.getFontMetrics().getAscent() + 2);
         } finally {
@@ -96,6 +93,7 @@ public final class SweepPicture {
         } catch (IOException e) {
             // Only a warm-up: the real picture reports its own failures.
         }
+        TrailCanvas.warmUp();
     }
 
     /** Draws the picture and writes it as PNG. */
@@ -133,7 +131,8 @@ public final class SweepPicture {
             }
             int top = boxRows * box.height;
             for (int i = 0; i < panels.size(); i++) {
-                panel(g, panels.get(i), (i % PANELS_PER_ROW) * panelW, top + (i / PANELS_PER_ROW) * (panelH + TITLE));
+                panel(g, image, panels.get(i), (i % PANELS_PER_ROW) * panelW,
+                        top + (i / PANELS_PER_ROW) * (panelH + TITLE));
             }
             key(g, keys, keyTop);
         } finally {
@@ -143,58 +142,52 @@ public final class SweepPicture {
     }
 
     /** One trails picture with its title above it, its top left corner at ({@code left}, {@code top}). */
-    private static void panel(Graphics2D g, Panel p, int left, int top) {
+    private static void panel(Graphics2D g, BufferedImage image, Panel p, int left, int top) {
         Dimension d = Pictures.sizeFor(p.plan().getBounds(), PANEL_SIDE);
         g.setColor(p.color());
         g.drawString(p.title(), left + 6, top + TITLE - 6);
         BufferedImage plan = Pictures.render(new Renderer(p.plan()), WorldSnapshot.planOnly(p.plan()), d.width, d.height);
         g.drawImage(plan, left, top + TITLE, null);
         ViewTransform view = ViewTransform.fit(p.plan().getBounds(), d.width, d.height);
-        Graphics2D t = (Graphics2D) g.create(left, top + TITLE, d.width, d.height);
-        try {
-            t.setStroke(new BasicStroke(TRAIL_WIDTH, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-            Color c = p.color();
-            Color faint = new Color(c.getRed(), c.getGreen(), c.getBlue(), Math.max(40, 200 / Math.max(1, p.runs().size() / 4)));
-            for (RunTrails run : p.runs()) {
-                t.setColor(faint);
-                for (double[] piece : run.pieces()) {
-                    path(t, piece, view);
+        Color c = p.color();
+        Color faint = new Color(c.getRed(), c.getGreen(), c.getBlue(), Math.max(40, 200 / Math.max(1, p.runs().size() / 4)));
+        TrailCanvas canvas = new TrailCanvas(image, left, top + TITLE, d.width, d.height);
+        for (RunTrails run : p.runs()) {
+            for (double[] piece : run.pieces()) {
+                if (piece.length >= 4) {
+                    canvas.stroke(inPixels(piece, view), TRAIL_WIDTH, faint);
                 }
             }
-            for (RunTrails run : p.runs()) {
-                marks(t, run, view, c);
-            }
+        }
+        for (RunTrails run : p.runs()) {
+            marks(canvas, run, view, c);
+        }
+        Graphics2D t = (Graphics2D) g.create(left, top + TITLE, d.width, d.height);
+        try {
             scale(t, p.plan(), view, d);
         } finally {
             t.dispose();
         }
     }
 
-    private static void path(Graphics2D g, double[] piece, ViewTransform view) {
-        if (piece.length < 4) {
-            return;
+    /** The piece {@code x0, y0, x1, y1, ...} in world metres as pixels of its trails picture. */
+    private static double[] inPixels(double[] piece, ViewTransform view) {
+        double[] xy = new double[piece.length & ~1];
+        for (int i = 0; i + 1 < piece.length; i += 2) {
+            xy[i] = view.pixelX(piece[i]);
+            xy[i + 1] = view.pixelY(piece[i + 1]);
         }
-        Path2D.Double path = new Path2D.Double();
-        path.moveTo(view.pixelX(piece[0]), view.pixelY(piece[1]));
-        for (int i = 2; i + 1 < piece.length; i += 2) {
-            path.lineTo(view.pixelX(piece[i]), view.pixelY(piece[i + 1]));
-        }
-        g.draw(path);
+        return xy;
     }
 
     /** A ring where each robot started, a dot where it ended. */
-    private static void marks(Graphics2D g, RunTrails run, ViewTransform view, Color c) {
-        g.setStroke(new BasicStroke(1.5f));
+    private static void marks(TrailCanvas canvas, RunTrails run, ViewTransform view, Color c) {
         for (double[] s : run.starts()) {
-            Ellipse2D ring = circle(view.pixelX(s[0]), view.pixelY(s[1]));
-            g.setColor(Color.white);
-            g.fill(ring);
-            g.setColor(c);
-            g.draw(ring);
+            canvas.dot(view.pixelX(s[0]), view.pixelY(s[1]), MARK / 2, Color.white);
+            canvas.ring(view.pixelX(s[0]), view.pixelY(s[1]), MARK / 2, MARK_LINE, c);
         }
         for (double[] e : run.ends()) {
-            g.setColor(c);
-            g.fill(circle(view.pixelX(e[0]), view.pixelY(e[1])));
+            canvas.dot(view.pixelX(e[0]), view.pixelY(e[1]), MARK / 2, c);
         }
     }
 
