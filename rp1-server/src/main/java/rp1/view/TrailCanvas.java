@@ -68,7 +68,7 @@ final class TrailCanvas {
 
     /**
      * Paints on a small picture of its own what a summary picture paints, enough times for the loops to
-     * be compiled: {@link SweepPicture#warmUp} calls this while a sweep's runs compute.
+     * be compiled: {@link SweepPicture#warmUp} calls this while a sweep is prepared and its first run goes.
      */
     static void warmUp() {
         BufferedImage image = new BufferedImage(64, 64, BufferedImage.TYPE_INT_RGB);
