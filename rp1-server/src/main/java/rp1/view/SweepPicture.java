@@ -74,13 +74,13 @@ public final class SweepPicture {
      * painted enough times for its loops to be compiled.
      */
     public static void warmUp() {
-        BufferedImage image = new BufferedImage(96, 64, BufferedImage.TYPE_INT_RGB);
+        BufferedImage image = new BufferedImage(96, 48, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             g.setColor(Color.white);
-            g.fillRect(0, 0, 96, 64);
+            g.fillRect(0, 0, 96, 48);
             g.setColor(colour(1));
             g.draw(circle(60, 20));
             g.fill(circle(20, 20));
