@@ -167,10 +167,90 @@ class GridTest {
         }
     }
 
+    /**
+     * The same away from the origin, for segments level, upright or all but either, of no length,
+     * ending beyond a million kilometres or crossing the plan from far outside: however a row's columns
+     * are bounded, no cell the exact test takes may be left out.
+     */
+    @Test
+    void anySegmentAnywhereFindsWhatTryingEveryCellOfItsBoxFinds() {
+        double side = 40.0;
+        double left = -731.3;
+        double bottom = 512.7;
+        Grid grid = new Grid(new RsRectangle(left, bottom, side, side), 1.0, MAX_CELLS);
+        java.util.Random random = new java.util.Random(6);
+        List<double[]> boxes = new ArrayList<>();
+        for (int id = 0; id < 300; id++) {
+            double x = left + side * random.nextDouble();
+            double y = bottom + side * random.nextDouble();
+            double w = 0.05 + 0.6 * random.nextDouble();
+            boxes.add(new double[] {x - left, y - bottom, x - left + w, y - bottom + w});
+            grid.insert(id, x, y, x + w, y + w);
+        }
+        for (int i = 0; i < 20_000; i++) {
+            double x0 = left + side * (1.4 * random.nextDouble() - 0.2);
+            double y0 = bottom + side * (1.4 * random.nextDouble() - 0.2);
+            double heading = 2 * Math.PI * random.nextDouble();
+            double length = switch (i % 5) {
+                case 0 -> 1e6;
+                case 1 -> 3e9; // beyond where the margin for rounding is trusted
+                case 2 -> 0.0;
+                default -> side * random.nextDouble();
+            };
+            double dx = length * Math.cos(heading);
+            double dy = length * Math.sin(heading);
+            if (i % 7 == 0) {
+                dy = dx * 1e-13; // all but level
+            } else if (i % 7 == 1) {
+                dx = dy * 1e-13; // all but upright
+            } else if (i % 7 == 2) {
+                dy = 0.0; // level
+            } else if (i % 7 == 3) {
+                dx = 0.0; // upright
+            }
+            double radius = i % 3 == 0 ? 0.0 : 0.7 * random.nextDouble();
+            List<Integer> found = alongSegment(grid, x0, y0, x0 + dx, y0 + dy, radius);
+            found.sort(null);
+            assertEquals(everyCellOfTheBox(boxes, side, left, bottom, x0, y0, x0 + dx, y0 + dy, radius), found,
+                    "segment " + i);
+        }
+    }
+
     /** The items in the cells (1 m, from 0 to side) that the box test admits, trying every cell of the box. */
     private static List<Integer> everyCellOfTheBox(List<double[]> boxes, double side, double x0, double y0, double x1,
                                                    double y1, double radius) {
+        return everyCellOfTheBox(boxes, side, 0.0, 0.0, x0, y0, x1, y1, radius);
+    }
+
+    /**
+     * The same for cells from (left, bottom), the boxes given from there and the segment where it is:
+     * the grid's cell centres are worked out as it works them out.
+     */
+    private static List<Integer> everyCellOfTheBox(List<double[]> boxes, double side, double left, double bottom,
+                                                   double x0, double y0, double x1, double y1, double radius) {
         int cells = (int) side;
+        if (left != 0.0 || bottom != 0.0) {
+            List<Integer> found = new ArrayList<>();
+            double reach = radius + Math.sqrt(0.5);
+            int c0 = clamp(Math.floor(Math.min(x0, x1) - radius - left), cells);
+            int c1 = clamp(Math.floor(Math.max(x0, x1) + radius - left), cells);
+            int r0 = clamp(Math.floor(Math.min(y0, y1) - radius - bottom), cells);
+            int r1 = clamp(Math.floor(Math.max(y0, y1) + radius - bottom), cells);
+            for (int id = 0; id < boxes.size(); id++) {
+                double[] b = boxes.get(id);
+                boolean hit = false;
+                for (int r = Math.max(r0, clamp(Math.floor(b[1]), cells)); r <= Math.min(r1, clamp(Math.floor(b[3]), cells)); r++) {
+                    for (int c = Math.max(c0, clamp(Math.floor(b[0]), cells)); c <= Math.min(c1, clamp(Math.floor(b[2]), cells)); c++) {
+                        hit |= Outlines.squaredToSegment(left + (c + 0.5), bottom + (r + 0.5), x0, y0, x1, y1)
+                                <= reach * reach;
+                    }
+                }
+                if (hit) {
+                    found.add(id);
+                }
+            }
+            return found;
+        }
         int c0 = clamp(Math.floor(Math.min(x0, x1) - radius), cells);
         int c1 = clamp(Math.floor(Math.max(x0, x1) + radius), cells);
         int r0 = clamp(Math.floor(Math.min(y0, y1) - radius), cells);
