@@ -6,6 +6,9 @@ import java.awt.Dimension;
 import java.awt.Graphics2D;
 import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+import java.awt.image.SinglePixelPackedSampleModel;
+import java.awt.image.WritableRaster;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -140,6 +143,22 @@ public final class Pictures {
             }
         }
         return power;
+    }
+
+    /**
+     * The pixels of an RGB picture as its raster holds them, row after row with nothing between rows,
+     * so that writing one changes the picture; null for a picture that does not hold them so (another
+     * type, or a subimage, which shares its parent's array with an offset and longer rows).
+     */
+    static int[] rgbPixelsInPlace(BufferedImage image) {
+        WritableRaster raster = image.getRaster();
+        if (image.getType() == BufferedImage.TYPE_INT_RGB && raster.getParent() == null
+                && raster.getDataBuffer() instanceof DataBufferInt d && d.getOffset() == 0
+                && raster.getSampleModel() instanceof SinglePixelPackedSampleModel m
+                && m.getScanlineStride() == image.getWidth()) {
+            return d.getData();
+        }
+        return null;
     }
 
     /**

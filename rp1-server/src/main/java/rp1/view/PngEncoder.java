@@ -1,9 +1,6 @@
 package rp1.view;
 
 import java.awt.image.BufferedImage;
-import java.awt.image.DataBufferInt;
-import java.awt.image.SinglePixelPackedSampleModel;
-import java.awt.image.WritableRaster;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -84,18 +81,11 @@ public final class PngEncoder {
         }
     }
 
-    /**
-     * The RGB image's pixels row after row, read in place where its raster holds them so (a picture
-     * drawn here), else copied out (a subimage shares its parent's array, with an offset and longer rows).
-     */
+    /** The RGB image's pixels row after row: read in place where it holds them so, else copied out. */
     private static int[] packed(BufferedImage image) {
+        int[] inPlace = Pictures.rgbPixelsInPlace(image);
         int width = image.getWidth();
-        WritableRaster raster = image.getRaster();
-        if (raster.getParent() == null && raster.getDataBuffer() instanceof DataBufferInt d && d.getOffset() == 0
-                && raster.getSampleModel() instanceof SinglePixelPackedSampleModel m && m.getScanlineStride() == width) {
-            return d.getData();
-        }
-        return image.getRGB(0, 0, width, image.getHeight(), null, 0, width);
+        return inPlace != null ? inPlace : image.getRGB(0, 0, width, image.getHeight(), null, 0, width);
     }
 
     /** A chunk: its length, type, data and the CRC-32 of type and data. */

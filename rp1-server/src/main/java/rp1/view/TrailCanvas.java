@@ -2,9 +2,6 @@ package rp1.view;
 
 import java.awt.Color;
 import java.awt.image.BufferedImage;
-import java.awt.image.DataBufferInt;
-import java.awt.image.SinglePixelPackedSampleModel;
-import java.awt.image.WritableRaster;
 import java.util.Arrays;
 
 /**
@@ -46,10 +43,8 @@ final class TrailCanvas {
      *         the rectangle is not inside it
      */
     TrailCanvas(BufferedImage image, int left, int top, int width, int height) {
-        WritableRaster raster = image.getRaster();
-        if (image.getType() != BufferedImage.TYPE_INT_RGB || raster.getParent() != null
-                || !(raster.getDataBuffer() instanceof DataBufferInt data) || data.getOffset() != 0
-                || !(raster.getSampleModel() instanceof SinglePixelPackedSampleModel model)) {
+        int[] inPlace = Pictures.rgbPixelsInPlace(image);
+        if (inPlace == null) {
             throw new IllegalArgumentException("trails are painted on a packed RGB picture, not " + image);
         }
         if (left < 0 || top < 0 || width < 0 || height < 0 || left + width > image.getWidth()
@@ -57,8 +52,8 @@ final class TrailCanvas {
             throw new IllegalArgumentException("the rectangle " + width + "x" + height + " at " + left + "," + top
                     + " is not inside the picture of " + image.getWidth() + "x" + image.getHeight());
         }
-        this.pixels = data.getData();
-        this.stride = model.getScanlineStride();
+        this.pixels = inPlace;
+        this.stride = image.getWidth();
         this.left = left;
         this.top = top;
         this.width = width;
