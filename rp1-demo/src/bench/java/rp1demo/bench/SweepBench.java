@@ -24,6 +24,13 @@ import rp1.simulator.launch.JavaCommand;
  * {@code rp1} gives it, every one a fresh process, as a user would start it. The one run and the
  * sweep are timed in {@link #PAIRS} alternating pairs and compared pair by pair; the others are the
  * median of three tries. Prints figures and never fails on them.
+ *
+ * <p>The sweeps write their folders in the system's temporary folder, as a user's would go on a disk;
+ * where there is a RAM disk ({@code /dev/shm}) each pair also times the sweep with its folder there. A
+ * sweep creates some 450 files and folders where the one run creates one picture, and on a file system
+ * that makes creating files slow for minutes after many were deleted (this project's machine: ext4
+ * without a journal, docs/performance.md) the first figure moves with the disk's recent past; the
+ * second is the simulator's alone. The cost of creating that many files in both places is printed too.
  */
 public final class SweepBench {
     private static final int TRIES = 3;
@@ -47,6 +54,10 @@ public final class SweepBench {
      * that keep state in static fields, and this class's would count.
      */
     private static final String CLASS_PATH = withoutBenchClasses();
+
+    /** The folders and files a 64-run sweep creates: a folder and six files per run (docs/guide.md). */
+    private static final int RUN_FOLDERS = 64;
+    private static final int FILES_PER_RUN = 6;
 
     private SweepBench() {
     }
@@ -99,45 +110,94 @@ public final class SweepBench {
                 LocalDate.now(), Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
                 java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         String p = properties.toString();
+        Path temporary = Paths.get(System.getProperty("java.io.tmpdir"));
+        Path ram = ramDisk();
+        System.out.printf(Locale.ROOT, "creating a 64-run sweep's %d folders and %d files: %.1f ms in %s%s%n",
+                RUN_FOLDERS, RUN_FOLDERS * FILES_PER_RUN, fileCreationMillis(temporary), temporary,
+                ram == null ? " (no RAM disk here)" : String.format(Locale.ROOT, ", %.1f ms on the RAM disk %s",
+                        fileCreationMillis(ram), ram));
         // The one run and the sweep alternate, pair by pair, each pair in the other order: a machine
         // that grows busier or quieter meanwhile moves both, and the ratio is taken within each pair.
         double[] ones = new double[PAIRS];
         double[] sweeps = new double[PAIRS];
         double[] ratios = new double[PAIRS];
+        double[] ramSweeps = new double[PAIRS];
+        double[] ramRatios = new double[PAIRS];
+        String[] sweep = {"-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT"};
         for (int i = 0; i < PAIRS; i++) {
             if (i % 2 == 0) {
-                ones[i] = time(SIMULATOR, "rp1.Server", "-p", p);
+                ones[i] = time(temporary, SIMULATOR, "rp1.Server", "-p", p);
+            } else if (ram != null) {
+                ramSweeps[i] = time(ram, QUICK, "rp1.Sweep", sweep);
             }
-            sweeps[i] = time(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
+            sweeps[i] = time(temporary, QUICK, "rp1.Sweep", sweep);
             if (i % 2 == 1) {
-                ones[i] = time(SIMULATOR, "rp1.Server", "-p", p);
+                ones[i] = time(temporary, SIMULATOR, "rp1.Server", "-p", p);
+            } else if (ram != null) {
+                ramSweeps[i] = time(ram, QUICK, "rp1.Sweep", sweep);
             }
             ratios[i] = sweeps[i] / ones[i];
+            ramRatios[i] = ramSweeps[i] / ones[i];
         }
         double one = median(ones);
         double loader = median(sweeps);
-        double fullJit = median(BOTH_COMPILERS, "rp1.Sweep", "-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT");
-        double process = median(QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-8", "--jobs", "2", "--isolation", "process",
-                "--out", "OUT");
+        double fullJit = median(temporary, BOTH_COMPILERS, "rp1.Sweep", sweep);
+        double process = median(temporary, QUICK, "rp1.Sweep", "-p", p, "--seeds", "1-8", "--jobs", "2", "--isolation",
+                "process", "--out", "OUT");
         System.out.printf(Locale.ROOT, "one bumper run of 60 simulated s as a process of its own (java %s rp1.Server):"
                 + " %.2f s%n", String.join(" ", SIMULATOR), one);
         double[] sorted = ratios.clone();
         Arrays.sort(sorted);
-        System.out.printf(Locale.ROOT, "64 such runs, ./rp1 sweep --jobs 2 (--isolation loader, %s): %.2f s; %.2f times"
-                + " the one run (median of %d alternating pairs' ratios, %.2f to %.2f; target: at most 2)%n",
-                String.join(" ", QUICK), loader, median(ratios), PAIRS, sorted[0], sorted[PAIRS - 1]);
+        System.out.printf(Locale.ROOT, "64 such runs, ./rp1 sweep --jobs 2 (--isolation loader, %s), their folders in %s:"
+                + " %.2f s; %.2f times the one run (median of %d alternating pairs' ratios, %.2f to %.2f; target: at most 2)%n",
+                String.join(" ", QUICK), temporary, loader, median(ratios), PAIRS, sorted[0], sorted[PAIRS - 1]);
+        if (ram != null) {
+            double[] ramSorted = ramRatios.clone();
+            Arrays.sort(ramSorted);
+            System.out.printf(Locale.ROOT, "the same sweep, its folders on the RAM disk %s: %.2f s; %.2f times the one run"
+                    + " (the same pairs, %.2f to %.2f)%n", ram, median(ramSweeps), median(ramRatios), ramSorted[0],
+                    ramSorted[PAIRS - 1]);
+        }
         System.out.printf(Locale.ROOT, "the same with both compilers (without %s): %.2f s, %.1f times%n", JavaCommand.QUICK_COMPILER,
                 fullJit, fullJit / one);
         System.out.printf(Locale.ROOT, "8 such runs, --isolation process: %.2f s (%.2f s a run)%n", process, process / 8);
     }
 
-    /** The median wall seconds of {@link #TRIES} runs of {@code java JVM MAIN ARGS}, each in a fresh folder (OUT in it). */
-    private static double median(List<String> jvm, String main, String... args) throws IOException, InterruptedException {
+    /**
+     * The median wall seconds of {@link #TRIES} runs of {@code java JVM MAIN ARGS}, each in a fresh folder
+     * in {@code parent} (OUT in it).
+     */
+    private static double median(Path parent, List<String> jvm, String main, String... args)
+            throws IOException, InterruptedException {
         double[] times = new double[TRIES];
         for (int i = 0; i < TRIES; i++) {
-            times[i] = time(jvm, main, args);
+            times[i] = time(parent, jvm, main, args);
         }
         return median(times);
+    }
+
+    /** The RAM disk, if this machine has one this process may write in; else null. */
+    private static Path ramDisk() {
+        Path shm = Paths.get("/dev/shm");
+        return Files.isDirectory(shm) && Files.isWritable(shm) ? shm : null;
+    }
+
+    /**
+     * The milliseconds it takes to create, in a fresh folder in {@code parent}, as many folders and
+     * (empty) files as a 64-run sweep creates for its runs; the folder is deleted when the bench ends,
+     * as the sweeps' are, since deleting files is what makes creating them slow on some file systems.
+     */
+    private static double fileCreationMillis(Path parent) throws IOException {
+        Path dir = Files.createTempDirectory(parent, "rp1-sweep-bench");
+        FOLDERS.add(dir);
+        long start = System.nanoTime();
+        for (int r = 0; r < RUN_FOLDERS; r++) {
+            Path run = Files.createDirectory(dir.resolve(Integer.toString(r)));
+            for (int f = 0; f < FILES_PER_RUN; f++) {
+                Files.createFile(run.resolve(f + ".txt"));
+            }
+        }
+        return (System.nanoTime() - start) * 1e-6;
     }
 
     private static double median(double[] values) {
@@ -147,9 +207,10 @@ public final class SweepBench {
         return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
     }
 
-    /** The wall seconds of one run of {@code java JVM MAIN ARGS} in a fresh folder (OUT in it). */
-    private static double time(List<String> jvm, String main, String... args) throws IOException, InterruptedException {
-        Path dir = Files.createTempDirectory("rp1-sweep-bench");
+    /** The wall seconds of one run of {@code java JVM MAIN ARGS} in a fresh folder in {@code parent} (OUT in it). */
+    private static double time(Path parent, List<String> jvm, String main, String... args)
+            throws IOException, InterruptedException {
+        Path dir = Files.createTempDirectory(parent, "rp1-sweep-bench");
         FOLDERS.add(dir);
         List<String> words = new ArrayList<>();
         for (String a : args) {
