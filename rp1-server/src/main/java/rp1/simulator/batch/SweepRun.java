@@ -64,6 +64,8 @@ public final class SweepRun {
     /** Where the server starts its client starter and its stop. */
     private final HelperThreads helpers;
     private RunStatistics statistics;
+    /** The robots' trails as the report left them in the folder: worked out once, for the file and the sweep. */
+    private List<Trail> trails = List.of();
     private List<RobotResult> robots = List.of();
     private double endTime = Double.NaN;
 
@@ -269,14 +271,17 @@ public final class SweepRun {
 
     /** The robots' trails, once {@link #run} has returned (none if the server never started). */
     List<Trail> trails() {
-        return statistics == null ? List.of() : statistics.trails();
+        return trails;
     }
 
     private RunReport report(RunReport report) {
+        if (statistics != null) {
+            trails = statistics.trails();
+        }
         try {
             report.write(dir);
             if (statistics != null) {
-                TrailFile.write(dir, statistics.trails());
+                TrailFile.write(dir, trails);
             }
         } catch (IOException e) {
             System.err.println("rp1.simulator.batch.SweepRun: cannot write the run's results in " + dir + ": "
