@@ -118,6 +118,8 @@ public final class SweepBench {
                         fileCreationMillis(ram), ram));
         // The one run and the sweep alternate, pair by pair, each pair in the other order: a machine
         // that grows busier or quieter meanwhile moves both, and the ratio is taken within each pair.
+        // The sweep on the RAM disk goes at the pair's other end: the sweep in the temporary folder stays
+        // next to the one run, as before, and the two sweeps are timed next to each other.
         double[] ones = new double[PAIRS];
         double[] sweeps = new double[PAIRS];
         double[] ratios = new double[PAIRS];
