@@ -154,9 +154,7 @@ public final class SweepPicture {
         TrailCanvas canvas = new TrailCanvas(image, left, top + TITLE, d.width, d.height);
         for (RunTrails run : p.runs()) {
             for (double[] piece : run.pieces()) {
-                if (piece.length >= 4) {
-                    canvas.stroke(inPixels(piece, view), TRAIL_WIDTH, faint);
-                }
+                canvas.stroke(inPixels(piece, view), TRAIL_WIDTH, faint);
             }
         }
         for (RunTrails run : p.runs()) {

@@ -79,15 +79,13 @@ final class TrailCanvas {
     }
 
     /**
-     * Strokes the polyline {@code x0, y0, x1, y1, ...} ({@code lineWidth} pixels wide; one point is a
-     * dot) in {@code colour}. Legs with a coordinate that is not finite are left out.
+     * Strokes the polyline {@code x0, y0, x1, y1, ...} ({@code lineWidth} pixels wide) in {@code colour};
+     * fewer than two points paint nothing, as with Java 2D. Legs with a coordinate that is not finite
+     * are left out.
      */
     void stroke(double[] xy, double lineWidth, Color colour) {
         double reach = lineWidth / 2.0 + 0.5;
         int points = xy.length / 2;
-        if (points == 1) {
-            leg(xy[0], xy[1], xy[0], xy[1], reach);
-        }
         for (int i = 1; i < points; i++) {
             leg(xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1], reach);
         }
