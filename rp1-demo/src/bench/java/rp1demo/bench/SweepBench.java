@@ -112,8 +112,8 @@ public final class SweepBench {
         String p = properties.toString();
         Path temporary = Paths.get(System.getProperty("java.io.tmpdir"));
         Path ram = ramDisk();
-        System.out.printf(Locale.ROOT, "creating a 64-run sweep's %d folders and %d files: %.1f ms in %s%s%n",
-                RUN_FOLDERS, RUN_FOLDERS * FILES_PER_RUN, fileCreationMillis(temporary), temporary,
+        System.out.printf(Locale.ROOT, "creating a %d-run sweep's %d folders and %d files: %.1f ms in %s%s%n",
+                RUN_FOLDERS, RUN_FOLDERS, RUN_FOLDERS * FILES_PER_RUN, fileCreationMillis(temporary), temporary,
                 ram == null ? " (no RAM disk here)" : String.format(Locale.ROOT, ", %.1f ms on the RAM disk %s",
                         fileCreationMillis(ram), ram));
         // The one run and the sweep alternate, pair by pair, each pair in the other order: a machine
@@ -125,7 +125,7 @@ public final class SweepBench {
         double[] ratios = new double[PAIRS];
         double[] ramSweeps = new double[PAIRS];
         double[] ramRatios = new double[PAIRS];
-        String[] sweep = {"-p", p, "--seeds", "1-64", "--jobs", "2", "--out", "OUT"};
+        String[] sweep = {"-p", p, "--seeds", "1-" + RUN_FOLDERS, "--jobs", "2", "--out", "OUT"};
         for (int i = 0; i < PAIRS; i++) {
             if (i % 2 == 0) {
                 ones[i] = time(temporary, SIMULATOR, "rp1.Server", "-p", p);
@@ -139,7 +139,9 @@ public final class SweepBench {
                 ramSweeps[i] = time(ram, QUICK, "rp1.Sweep", sweep);
             }
             ratios[i] = sweeps[i] / ones[i];
-            ramRatios[i] = ramSweeps[i] / ones[i];
+            if (ram != null) {
+                ramRatios[i] = ramSweeps[i] / ones[i];
+            }
         }
         double one = median(ones);
         double loader = median(sweeps);
@@ -193,8 +195,7 @@ public final class SweepBench {
      * as the sweeps' are, since deleting files is what makes creating them slow on some file systems.
      */
     private static double fileCreationMillis(Path parent) throws IOException {
-        Path dir = Files.createTempDirectory(parent, "rp1-sweep-bench");
-        FOLDERS.add(dir);
+        Path dir = keptFolder(parent);
         long start = System.nanoTime();
         for (int r = 0; r < RUN_FOLDERS; r++) {
             Path run = Files.createDirectory(dir.resolve(Integer.toString(r)));
@@ -203,6 +204,13 @@ public final class SweepBench {
             }
         }
         return (System.nanoTime() - start) * 1e-6;
+    }
+
+    /** A fresh folder in {@code parent}, kept until the bench ends (see {@link #FOLDERS}). */
+    private static Path keptFolder(Path parent) throws IOException {
+        Path dir = Files.createTempDirectory(parent, "rp1-sweep-bench");
+        FOLDERS.add(dir);
+        return dir;
     }
 
     private static double median(double[] values) {
@@ -215,8 +223,7 @@ public final class SweepBench {
     /** The wall seconds of one run of {@code java JVM MAIN ARGS} in a fresh folder in {@code parent} (OUT in it). */
     private static double time(Path parent, List<String> jvm, String main, String... args)
             throws IOException, InterruptedException {
-        Path dir = Files.createTempDirectory(parent, "rp1-sweep-bench");
-        FOLDERS.add(dir);
+        Path dir = keptFolder(parent);
         List<String> words = new ArrayList<>();
         for (String a : args) {
             words.add(a.equals("OUT") ? dir.resolve("out").toString() : a);
